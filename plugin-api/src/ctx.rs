@@ -1,0 +1,275 @@
+//! [`Ctx`]: the plugin's handle to the host during one lifecycle call.
+
+use abi_stable::std_types::{RResult, RVec};
+
+use crate::__ffi::{BlobFfi, BuiltinFfi, BuiltinId, HostRef};
+use crate::component::component_type::{decode, BundleParts};
+use crate::{
+    BlobFormat, Bundle, Component, ComponentType, CtxError, Entity, EntityTransform, InputState,
+    LogLevel, Message, Time,
+};
+
+/// The host, as a plugin reaches it: the world, the clock, input, events and logging.
+///
+/// A `Ctx` is lent to each lifecycle call and cannot be kept. Calls that change the world
+/// validate their input and return [`CtxError`] instead of writing bad data.
+///
+/// ```no_run
+/// # use onyx_plugin_api::*;
+/// # fn demo(ctx: &mut Ctx) -> Result<(), CtxError> {
+/// let crate_ = ctx.spawn((Name::new("crate"), Transform::from_xyz(0.0, 2.0, 0.0)))?;
+/// let mut t: Transform = ctx.get(crate_)?;
+/// t.translation.y += 1.0;
+/// ctx.set(crate_, t)?;
+/// ctx.info(format!("crate is at {}", t.translation));
+/// # Ok(()) }
+/// ```
+pub struct Ctx<'a> {
+    host: HostRef<'a>,
+}
+
+fn ok<T>(result: RResult<T, crate::__ffi::CtxErrorFfi>) -> Result<T, CtxError> {
+    result.into_result().map_err(Into::into)
+}
+
+impl<'a> Ctx<'a> {
+    #[doc(hidden)]
+    pub fn new(host: HostRef<'a>) -> Self {
+        Self { host }
+    }
+
+    /// The name of the plugin being called (its crate name).
+    pub fn plugin_name(&self) -> &str {
+        self.host.plugin_name().as_str()
+    }
+
+    // ----- entities -----
+
+    /// Creates an entity with `components` (one component or a tuple of up to eight).
+    pub fn spawn(&mut self, components: impl Bundle) -> Result<Entity, CtxError> {
+        let mut parts = BundleParts::default();
+        components.write_to(&mut parts)?;
+        ok(self.host.spawn(parts.builtins, parts.blobs))
+    }
+
+    /// Removes `entity` and all its components.
+    pub fn despawn(&mut self, entity: Entity) -> Result<(), CtxError> {
+        ok(self.host.despawn(entity))
+    }
+
+    /// Whether `entity` exists.
+    pub fn contains(&self, entity: Entity) -> bool {
+        self.host.contains(entity)
+    }
+
+    /// Every entity in the world (a view into a host buffer, valid until the next call).
+    pub fn entities(&mut self) -> &[Entity] {
+        self.host.entities().as_slice()
+    }
+
+    // ----- components -----
+
+    /// Reads a component of `entity`: `ctx.get::<Transform>(e)`.
+    pub fn get<T: ComponentType>(&mut self, entity: Entity) -> Result<T, CtxError> {
+        T::get_from(self, entity)
+    }
+
+    /// Inserts or replaces a component of `entity`.
+    pub fn set<T: ComponentType>(&mut self, entity: Entity, value: T) -> Result<(), CtxError> {
+        value.set_into(self, entity)
+    }
+
+    /// Removes a component from `entity`: `ctx.remove::<Name>(e)`.
+    pub fn remove<T: ComponentType>(&mut self, entity: Entity) -> Result<(), CtxError> {
+        T::remove_from(self, entity)
+    }
+
+    /// Every entity holding the plugin component `T`, with its value.
+    pub fn query<T: Component>(&mut self) -> Result<Vec<(Entity, T)>, CtxError> {
+        let rows = self.host.query_blobs(T::NAME.into());
+        rows.into_iter()
+            .map(|row| Ok((row.entity, decode::<T>(row.format, &row.bytes)?)))
+            .collect()
+    }
+
+    /// Reads a plugin component stored as raw bytes under `name`.
+    pub fn get_raw(&mut self, entity: Entity, name: &str) -> Result<Vec<u8>, CtxError> {
+        Ok(self.raw_get_blob(entity, name)?.bytes.into_vec())
+    }
+
+    /// Stores `bytes` as the plugin component `name` of `entity` (shown as base64 in dumps).
+    pub fn set_raw(&mut self, entity: Entity, name: &str, bytes: &[u8]) -> Result<(), CtxError> {
+        self.raw_set_blob(entity, name, BlobFormat::Raw, RVec::from(bytes))
+    }
+
+    /// Removes the plugin component `name` (raw or serde) from `entity`.
+    pub fn remove_raw(&mut self, entity: Entity, name: &str) -> Result<(), CtxError> {
+        self.raw_remove_blob(entity, name)
+    }
+
+    // ----- bulk transforms -----
+
+    /// Every entity with a [`Transform`](crate::Transform), in one call: a view into a host
+    /// buffer, valid until the next call on this `Ctx`.
+    pub fn transforms(&mut self) -> &[EntityTransform] {
+        self.host.transforms().into_slice()
+    }
+
+    /// Writes many transforms in one call, all or nothing: if any is non-finite or names a
+    /// missing entity, none is written.
+    pub fn set_transforms(&mut self, items: &[EntityTransform]) -> Result<(), CtxError> {
+        ok(self.host.set_transforms(items.into()))
+    }
+
+    /// Edits every transform in place, in one round trip and without copies:
+    ///
+    /// ```no_run
+    /// # use onyx_plugin_api::*;
+    /// # fn demo(ctx: &mut Ctx) -> Result<(), CtxError> {
+    /// ctx.update_transforms(|items| {
+    ///     for item in items {
+    ///         item.transform.translation.y -= 0.1;
+    ///     }
+    /// })?;
+    /// # Ok(()) }
+    /// ```
+    ///
+    /// The result is validated like [`Ctx::set_transforms`].
+    pub fn update_transforms(
+        &mut self,
+        edit: impl FnOnce(&mut [EntityTransform]),
+    ) -> Result<(), CtxError> {
+        edit(self.host.transforms().into_mut_slice());
+        ok(self.host.commit_transforms())
+    }
+
+    // ----- time and input -----
+
+    /// The host clock.
+    pub fn time(&self) -> Time {
+        self.host.time()
+    }
+
+    /// Keyboard and mouse state for this frame.
+    pub fn input(&self) -> InputState {
+        self.host.input()
+    }
+
+    /// Pauses (or resumes) fixed steps; `on_update` keeps running with `delta` = 0.
+    pub fn set_paused(&mut self, paused: bool) {
+        self.host.set_paused(paused)
+    }
+
+    /// Runs simulation time at `scale` × real time (finite, ≥ 0).
+    pub fn set_time_scale(&mut self, scale: f32) -> Result<(), CtxError> {
+        ok(self.host.set_time_scale(scale))
+    }
+
+    /// Runs exactly one fixed step next frame, even while paused (the editor's "step").
+    pub fn step_once(&mut self) {
+        self.host.step_once()
+    }
+
+    /// Asks the host to finish this frame and quit.
+    pub fn request_quit(&mut self) {
+        self.host.request_quit()
+    }
+
+    // ----- events -----
+
+    /// Sends a typed custom event to every plugin (delivered next frame, sender included).
+    pub fn send<M: Message>(&mut self, message: &M) -> Result<(), CtxError> {
+        let payload = serde_json::to_vec(message).map_err(|e| CtxError::Encode {
+            component: M::NAME.to_owned(),
+            message: e.to_string(),
+        })?;
+        self.send_raw(M::NAME, &payload);
+        Ok(())
+    }
+
+    /// Sends a custom event with a raw payload.
+    pub fn send_raw(&mut self, name: &str, payload: &[u8]) {
+        self.host.send(name.into(), payload.into())
+    }
+
+    // ----- logging -----
+
+    /// Logs through the host's `tracing`, tagged with this plugin's name.
+    pub fn log(&mut self, level: LogLevel, message: impl AsRef<str>) {
+        self.host.log(level, message.as_ref().into())
+    }
+
+    /// Logs at [`LogLevel::Trace`].
+    pub fn trace(&mut self, message: impl AsRef<str>) {
+        self.log(LogLevel::Trace, message)
+    }
+
+    /// Logs at [`LogLevel::Debug`].
+    pub fn debug(&mut self, message: impl AsRef<str>) {
+        self.log(LogLevel::Debug, message)
+    }
+
+    /// Logs at [`LogLevel::Info`].
+    pub fn info(&mut self, message: impl AsRef<str>) {
+        self.log(LogLevel::Info, message)
+    }
+
+    /// Logs at [`LogLevel::Warn`].
+    pub fn warn(&mut self, message: impl AsRef<str>) {
+        self.log(LogLevel::Warn, message)
+    }
+
+    /// Logs at [`LogLevel::Error`].
+    pub fn error(&mut self, message: impl AsRef<str>) {
+        self.log(LogLevel::Error, message)
+    }
+
+    // ----- raw access used by `ComponentType` -----
+
+    pub(crate) fn raw_get_builtin(
+        &mut self,
+        entity: Entity,
+        id: BuiltinId,
+    ) -> Result<BuiltinFfi, CtxError> {
+        ok(self.host.get_builtin(entity, id))
+    }
+
+    pub(crate) fn raw_set_builtin(
+        &mut self,
+        entity: Entity,
+        value: BuiltinFfi,
+    ) -> Result<(), CtxError> {
+        ok(self.host.set_builtin(entity, value))
+    }
+
+    pub(crate) fn raw_remove_builtin(
+        &mut self,
+        entity: Entity,
+        id: BuiltinId,
+    ) -> Result<(), CtxError> {
+        ok(self.host.remove_builtin(entity, id))
+    }
+
+    pub(crate) fn raw_get_blob(&mut self, entity: Entity, name: &str) -> Result<BlobFfi, CtxError> {
+        ok(self.host.get_blob(entity, name.into()))
+    }
+
+    pub(crate) fn raw_set_blob(
+        &mut self,
+        entity: Entity,
+        name: &str,
+        format: BlobFormat,
+        bytes: RVec<u8>,
+    ) -> Result<(), CtxError> {
+        let blob = BlobFfi {
+            name: name.into(),
+            format,
+            bytes,
+        };
+        ok(self.host.set_blob(entity, blob))
+    }
+
+    pub(crate) fn raw_remove_blob(&mut self, entity: Entity, name: &str) -> Result<(), CtxError> {
+        ok(self.host.remove_blob(entity, name.into()))
+    }
+}

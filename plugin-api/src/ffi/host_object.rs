@@ -1,0 +1,217 @@
+//! [`HostObject`]: the host's services as a `#[sabi_trait]` object (a prefix vtable of
+//! `extern "C"` functions plus an opaque pointer), and [`HostBridge`], which builds it from
+//! any safe [`HostServices`] implementation.
+
+// The generated trait object types carry no docs of their own.
+// `#[sabi_trait]` expands to impls of abi_stable traits inside a generated module.
+#![allow(missing_docs, non_camel_case_types, non_local_definitions)]
+
+use std::panic::{catch_unwind, AssertUnwindSafe};
+
+use abi_stable::{
+    sabi_trait,
+    std_types::{RResult, RSlice, RSliceMut, RStr, RVec},
+};
+
+use super::{BlobFfi, BuiltinFfi, BuiltinId, CtxErrorFfi, EntityBlobFfi};
+use crate::host::HostServices;
+use crate::{CtxError, Entity, EntityTransform, InputState, LogLevel, Time};
+
+#[sabi_trait]
+pub trait HostObject {
+    fn plugin_name(&self) -> RStr<'_>;
+    fn log(&mut self, level: LogLevel, message: RStr<'_>);
+    fn time(&self) -> Time;
+    fn input(&self) -> InputState;
+    fn request_quit(&mut self);
+    fn set_paused(&mut self, paused: bool);
+    fn set_time_scale(&mut self, scale: f32) -> RResult<(), CtxErrorFfi>;
+    fn step_once(&mut self);
+    fn spawn(
+        &mut self,
+        builtins: RVec<BuiltinFfi>,
+        blobs: RVec<BlobFfi>,
+    ) -> RResult<Entity, CtxErrorFfi>;
+    fn despawn(&mut self, entity: Entity) -> RResult<(), CtxErrorFfi>;
+    fn contains(&self, entity: Entity) -> bool;
+    fn get_builtin(&mut self, entity: Entity, id: BuiltinId) -> RResult<BuiltinFfi, CtxErrorFfi>;
+    fn set_builtin(&mut self, entity: Entity, value: BuiltinFfi) -> RResult<(), CtxErrorFfi>;
+    fn remove_builtin(&mut self, entity: Entity, id: BuiltinId) -> RResult<(), CtxErrorFfi>;
+    fn get_blob(&mut self, entity: Entity, name: RStr<'_>) -> RResult<BlobFfi, CtxErrorFfi>;
+    fn set_blob(&mut self, entity: Entity, blob: BlobFfi) -> RResult<(), CtxErrorFfi>;
+    fn remove_blob(&mut self, entity: Entity, name: RStr<'_>) -> RResult<(), CtxErrorFfi>;
+    fn query_blobs(&mut self, name: RStr<'_>) -> RVec<EntityBlobFfi>;
+    fn entities(&mut self) -> RSlice<'_, Entity>;
+    fn transforms(&mut self) -> RSliceMut<'_, EntityTransform>;
+    fn commit_transforms(&mut self) -> RResult<(), CtxErrorFfi>;
+    fn set_transforms(&mut self, items: RSlice<'_, EntityTransform>) -> RResult<(), CtxErrorFfi>;
+    fn send(&mut self, name: RStr<'_>, payload: RSlice<'_, u8>);
+}
+
+/// The host object handed to each plugin call, borrowed for that call only.
+pub type HostRef<'a> = HostObject_TO<'a, abi_stable::sabi_types::RMut<'a, ()>>;
+
+/// Adapts a safe [`HostServices`] to the [`HostObject`] vtable.
+///
+/// A panic inside the host's implementation must not unwind through `extern "C"` (that
+/// aborts the process), so each call is guarded: a panicking host call is logged and
+/// answered with an error or an empty value.
+pub struct HostBridge<'h, H: ?Sized>(pub &'h mut H);
+
+fn host_bug(what: &str) -> CtxErrorFfi {
+    CtxError::Invalid {
+        message: format!("the host panicked while serving `{what}` (a host bug)"),
+    }
+    .into()
+}
+
+fn guard<T>(what: &str, fallback: impl FnOnce() -> T, f: impl FnOnce() -> T) -> T {
+    match catch_unwind(AssertUnwindSafe(f)) {
+        Ok(value) => value,
+        Err(_) => {
+            eprintln!("onyx: the host panicked while serving `{what}` to a plugin");
+            fallback()
+        }
+    }
+}
+
+fn result<T>(what: &str, f: impl FnOnce() -> Result<T, CtxError>) -> RResult<T, CtxErrorFfi> {
+    guard(
+        what,
+        || RResult::RErr(host_bug(what)),
+        || f().map_err(Into::into).into(),
+    )
+}
+
+impl<H: HostServices + ?Sized> HostObject for HostBridge<'_, H> {
+    fn plugin_name(&self) -> RStr<'_> {
+        self.0.plugin_name().into()
+    }
+
+    fn log(&mut self, level: LogLevel, message: RStr<'_>) {
+        guard("log", || (), || self.0.log(level, message.as_str()))
+    }
+
+    fn time(&self) -> Time {
+        guard("time", Time::default, || self.0.time())
+    }
+
+    fn input(&self) -> InputState {
+        guard("input", InputState::default, || self.0.input())
+    }
+
+    fn request_quit(&mut self) {
+        guard("request_quit", || (), || self.0.request_quit())
+    }
+
+    fn set_paused(&mut self, paused: bool) {
+        guard("set_paused", || (), || self.0.set_paused(paused))
+    }
+
+    fn set_time_scale(&mut self, scale: f32) -> RResult<(), CtxErrorFfi> {
+        result("set_time_scale", || self.0.set_time_scale(scale))
+    }
+
+    fn step_once(&mut self) {
+        guard("step_once", || (), || self.0.step_once())
+    }
+
+    fn spawn(
+        &mut self,
+        builtins: RVec<BuiltinFfi>,
+        blobs: RVec<BlobFfi>,
+    ) -> RResult<Entity, CtxErrorFfi> {
+        result("spawn", || {
+            let builtins = builtins.into_iter().map(Into::into).collect();
+            let blobs = blobs.into_iter().map(Into::into).collect();
+            self.0.spawn(builtins, blobs)
+        })
+    }
+
+    fn despawn(&mut self, entity: Entity) -> RResult<(), CtxErrorFfi> {
+        result("despawn", || self.0.despawn(entity))
+    }
+
+    fn contains(&self, entity: Entity) -> bool {
+        guard("contains", || false, || self.0.contains(entity))
+    }
+
+    fn get_builtin(&mut self, entity: Entity, id: BuiltinId) -> RResult<BuiltinFfi, CtxErrorFfi> {
+        result("get", || self.0.get_builtin(entity, id).map(Into::into))
+    }
+
+    fn set_builtin(&mut self, entity: Entity, value: BuiltinFfi) -> RResult<(), CtxErrorFfi> {
+        result("set", || self.0.set_builtin(entity, value.into()))
+    }
+
+    fn remove_builtin(&mut self, entity: Entity, id: BuiltinId) -> RResult<(), CtxErrorFfi> {
+        result("remove", || self.0.remove_builtin(entity, id))
+    }
+
+    fn get_blob(&mut self, entity: Entity, name: RStr<'_>) -> RResult<BlobFfi, CtxErrorFfi> {
+        result("get", || {
+            self.0.get_blob(entity, name.as_str()).map(Into::into)
+        })
+    }
+
+    fn set_blob(&mut self, entity: Entity, blob: BlobFfi) -> RResult<(), CtxErrorFfi> {
+        result("set", || self.0.set_blob(entity, blob.into()))
+    }
+
+    fn remove_blob(&mut self, entity: Entity, name: RStr<'_>) -> RResult<(), CtxErrorFfi> {
+        result("remove", || self.0.remove_blob(entity, name.as_str()))
+    }
+
+    fn query_blobs(&mut self, name: RStr<'_>) -> RVec<EntityBlobFfi> {
+        guard("query", RVec::new, || {
+            self.0
+                .query_blobs(name.as_str())
+                .into_iter()
+                .map(|(entity, blob)| EntityBlobFfi {
+                    entity,
+                    format: blob.format,
+                    bytes: blob.bytes.into(),
+                })
+                .collect()
+        })
+    }
+
+    // `entities` and `transforms` only refill a host-owned buffer; they are not guarded
+    // because the borrow they return cannot leave a `catch_unwind` closure. They must not
+    // panic (documented on `HostServices`).
+    fn entities(&mut self) -> RSlice<'_, Entity> {
+        self.0.entities().into()
+    }
+
+    fn transforms(&mut self) -> RSliceMut<'_, EntityTransform> {
+        self.0.transforms().into()
+    }
+
+    fn commit_transforms(&mut self) -> RResult<(), CtxErrorFfi> {
+        result("commit_transforms", || self.0.commit_transforms())
+    }
+
+    fn set_transforms(&mut self, items: RSlice<'_, EntityTransform>) -> RResult<(), CtxErrorFfi> {
+        result("set_transforms", || self.0.set_transforms(items.as_slice()))
+    }
+
+    fn send(&mut self, name: RStr<'_>, payload: RSlice<'_, u8>) {
+        guard(
+            "send",
+            || (),
+            || self.0.send(name.as_str(), payload.as_slice()),
+        )
+    }
+}
+
+/// Lends `host` to `f` as a [`Ctx`](crate::Ctx), without crossing a library boundary: for
+/// benchmarks that measure the boundary against a direct trait call.
+pub fn with_ctx<H: HostServices + ?Sized, R>(
+    host: &mut H,
+    f: impl FnOnce(&mut crate::Ctx<'_>) -> R,
+) -> R {
+    let mut bridge = HostBridge(host);
+    let host = HostObject_TO::from_ptr(&mut bridge, abi_stable::sabi_trait::TD_Opaque);
+    let mut ctx = crate::Ctx::new(host);
+    f(&mut ctx)
+}

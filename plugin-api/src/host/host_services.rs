@@ -1,0 +1,61 @@
+//! [`HostServices`]: what a host must provide to plugins, in plain Rust.
+
+use crate::host::{Blob, BuiltinId, BuiltinValue};
+use crate::{CtxError, Entity, EntityTransform, InputState, LogLevel, Time};
+
+/// The services behind [`Ctx`](crate::Ctx), implemented by the host for the duration of one
+/// plugin call. The SDK turns an implementation into the ABI-stable object that crosses
+/// the boundary; implementors never see FFI types.
+///
+/// Implementations must not panic (a panic is caught and turned into an error, but it is a
+/// host bug). Every method that changes the world validates its input and returns a
+/// [`CtxError`] instead of writing bad data.
+pub trait HostServices {
+    /// Name of the plugin being called.
+    fn plugin_name(&self) -> &str;
+    /// Logs `message` at `level` on behalf of the plugin.
+    fn log(&mut self, level: LogLevel, message: &str);
+    /// The clock.
+    fn time(&self) -> Time;
+    /// Keyboard and mouse state.
+    fn input(&self) -> InputState;
+    /// Ends the run after this frame.
+    fn request_quit(&mut self);
+    /// Pauses or resumes fixed steps.
+    fn set_paused(&mut self, paused: bool);
+    /// Sets the time scale (finite, ≥ 0).
+    fn set_time_scale(&mut self, scale: f32) -> Result<(), CtxError>;
+    /// Runs exactly one fixed step next frame, even while paused.
+    fn step_once(&mut self);
+    /// Creates an entity with these components.
+    fn spawn(&mut self, builtins: Vec<BuiltinValue>, blobs: Vec<Blob>) -> Result<Entity, CtxError>;
+    /// Removes an entity and all its components.
+    fn despawn(&mut self, entity: Entity) -> Result<(), CtxError>;
+    /// Whether the entity exists.
+    fn contains(&self, entity: Entity) -> bool;
+    /// Reads a built-in component.
+    fn get_builtin(&mut self, entity: Entity, id: BuiltinId) -> Result<BuiltinValue, CtxError>;
+    /// Inserts or replaces a built-in component.
+    fn set_builtin(&mut self, entity: Entity, value: BuiltinValue) -> Result<(), CtxError>;
+    /// Removes a built-in component.
+    fn remove_builtin(&mut self, entity: Entity, id: BuiltinId) -> Result<(), CtxError>;
+    /// Reads a plugin component.
+    fn get_blob(&mut self, entity: Entity, name: &str) -> Result<Blob, CtxError>;
+    /// Inserts or replaces a plugin component.
+    fn set_blob(&mut self, entity: Entity, blob: Blob) -> Result<(), CtxError>;
+    /// Removes a plugin component.
+    fn remove_blob(&mut self, entity: Entity, name: &str) -> Result<(), CtxError>;
+    /// Every entity that has the plugin component `name`, with its value.
+    fn query_blobs(&mut self, name: &str) -> Vec<(Entity, Blob)>;
+    /// Every entity, in a buffer owned by the host.
+    fn entities(&mut self) -> &[Entity];
+    /// Every entity with a transform, copied into a buffer owned by the host that the plugin
+    /// may edit in place and hand back with [`HostServices::commit_transforms`].
+    fn transforms(&mut self) -> &mut [EntityTransform];
+    /// Writes the buffer last returned by [`HostServices::transforms`] back to the world.
+    fn commit_transforms(&mut self) -> Result<(), CtxError>;
+    /// Writes these transforms to the world (all or nothing).
+    fn set_transforms(&mut self, items: &[EntityTransform]) -> Result<(), CtxError>;
+    /// Queues a custom event for every plugin, delivered next frame.
+    fn send(&mut self, name: &str, payload: &[u8]);
+}

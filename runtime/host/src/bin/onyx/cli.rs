@@ -1,0 +1,117 @@
+//! The command line, as clap types.
+
+use std::path::PathBuf;
+
+use clap::{Args, Parser, Subcommand};
+
+/// Onyx: a 3D application host that runs plugins.
+#[derive(Parser, Debug)]
+#[command(name = "onyx", version, about, long_about = None)]
+pub struct Cli {
+    /// What to do.
+    #[command(subcommand)]
+    pub command: Command,
+}
+
+/// Subcommands.
+#[derive(Subcommand, Debug)]
+pub enum Command {
+    /// Run the host with plugins, in a window or headless.
+    Run(RunArgs),
+    /// Show the plugin search path and the plugin libraries found in it.
+    Plugins,
+}
+
+/// `onyx run`.
+#[derive(Args, Debug)]
+#[command(after_help = "\
+PLUGINS
+  --plugin takes a library path (anything with a '/' or ending in the platform's library
+  suffix) or a NAME. A NAME is looked up as lib<NAME>.so (.dylib, NAME.dll) in:
+    1. each directory of $ONYX_PLUGIN_PATH
+    2. the directory of the onyx executable (cargo builds plugins next to it)
+    3. $CARGO_TARGET_DIR/{debug,release}, else ./target/{debug,release}
+  Plugins are attached in the order given and called in that order each frame.
+
+EXIT STATUS
+  0 on a clean run; 1 if a plugin faulted during the run; 2 if the run could not start
+  (a plugin or scene failed to load, no display). The reason is printed on one line.")]
+pub struct RunArgs {
+    /// A plugin to load: a library path or a NAME (repeatable; loaded in order).
+    #[arg(long = "plugin", value_name = "PATH|NAME")]
+    pub plugins: Vec<String>,
+    /// A scene file (RON) to load before the first frame.
+    #[arg(long, value_name = "FILE")]
+    pub scene: Option<PathBuf>,
+    /// Run without a window (and without a GPU), as fast as possible.
+    #[arg(long)]
+    pub headless: bool,
+    /// Stop after N frames (headless without --frames runs until a plugin quits).
+    #[arg(long, value_name = "N")]
+    pub frames: Option<u64>,
+    /// Fixed simulation steps per second.
+    #[arg(long, value_name = "HZ", default_value_t = 60.0)]
+    pub fixed_hz: f64,
+    /// Most fixed steps per frame (the spiral-of-death guard).
+    #[arg(long, value_name = "N", default_value_t = 8)]
+    pub max_steps: u32,
+    /// After the last frame, write every entity and component as JSON to FILE.
+    #[arg(long, value_name = "FILE")]
+    pub dump_state: Option<PathBuf>,
+    /// After the last frame, save the world as a scene file (written atomically).
+    #[arg(long, value_name = "FILE")]
+    pub save_scene: Option<PathBuf>,
+    /// A setting for a plugin, read in its on_attach (repeatable): `hello.quit_after=10`.
+    #[arg(long = "set", value_name = "PLUGIN.KEY=VALUE", value_parser = parse_setting)]
+    pub settings: Vec<(String, String, String)>,
+    /// Window size in pixels.
+    #[arg(long, value_name = "WxH", default_value = "1280x720", value_parser = parse_size)]
+    pub size: (u32, u32),
+}
+
+fn parse_setting(text: &str) -> Result<(String, String, String), String> {
+    let (target, value) = text
+        .split_once('=')
+        .ok_or_else(|| format!("`{text}` is not PLUGIN.KEY=VALUE (no `=`)"))?;
+    let (plugin, key) = target
+        .split_once('.')
+        .ok_or_else(|| format!("`{target}` is not PLUGIN.KEY (no `.`)"))?;
+    if plugin.is_empty() || key.is_empty() {
+        return Err(format!("`{text}`: plugin and key must not be empty"));
+    }
+    Ok((plugin.to_owned(), key.to_owned(), value.to_owned()))
+}
+
+fn parse_size(text: &str) -> Result<(u32, u32), String> {
+    let (w, h) = text
+        .split_once(['x', 'X'])
+        .ok_or_else(|| format!("`{text}` is not WIDTHxHEIGHT"))?;
+    let w: u32 = w.parse().map_err(|e| format!("width `{w}`: {e}"))?;
+    let h: u32 = h.parse().map_err(|e| format!("height `{h}`: {e}"))?;
+    if w == 0 || h == 0 {
+        return Err("width and height must be at least 1".into());
+    }
+    Ok((w, h))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use clap::CommandFactory;
+
+    #[test]
+    fn cli_definition_is_consistent() {
+        Cli::command().debug_assert();
+    }
+
+    #[test]
+    fn settings_and_sizes_parse_or_explain() {
+        assert_eq!(
+            parse_setting("hello.quit_after=3").unwrap(),
+            ("hello".into(), "quit_after".into(), "3".into())
+        );
+        assert!(parse_setting("hello=3").unwrap_err().contains("PLUGIN.KEY"));
+        assert_eq!(parse_size("640x480").unwrap(), (640, 480));
+        assert!(parse_size("640").is_err() && parse_size("0x5").is_err());
+    }
+}

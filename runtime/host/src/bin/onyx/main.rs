@@ -1,0 +1,148 @@
+//! `onyx`: the command line of the Onyx host.
+
+mod cli;
+
+use std::process::ExitCode;
+
+use anyhow::Context as _;
+use clap::Parser;
+use onyx_runtime::clock::ClockSettings;
+use onyx_runtime::plugins::{plugin_search, PluginSearchPath};
+use onyx_runtime::scene::write_atomically;
+use onyx_runtime::window::{run_windowed, WindowOptions};
+use onyx_runtime::{Host, HostConfig, PluginStatus};
+
+use cli::{Cli, Command, RunArgs};
+
+/// Why `onyx` stopped, with its exit code.
+enum Failure {
+    /// The run could not start (exit 2).
+    Start(anyhow::Error),
+    /// The run happened but was not clean (exit 1).
+    Run(anyhow::Error),
+}
+
+fn main() -> ExitCode {
+    let filter = tracing_subscriber::EnvFilter::try_from_default_env()
+        .unwrap_or_else(|_| tracing_subscriber::EnvFilter::new("info"));
+    tracing_subscriber::fmt()
+        .with_env_filter(filter)
+        .with_writer(std::io::stderr)
+        .init();
+    let cli = Cli::parse();
+    let result = match cli.command {
+        Command::Run(args) => run(args),
+        Command::Plugins => {
+            list_plugins();
+            Ok(())
+        }
+    };
+    match result {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(Failure::Start(e)) => {
+            eprintln!("onyx: {e:#}");
+            ExitCode::from(2)
+        }
+        Err(Failure::Run(e)) => {
+            eprintln!("onyx: {e:#}");
+            ExitCode::from(1)
+        }
+    }
+}
+
+fn run(args: RunArgs) -> Result<(), Failure> {
+    let config = HostConfig {
+        clock: ClockSettings {
+            fixed_hz: args.fixed_hz,
+            max_steps_per_frame: args.max_steps,
+            ..Default::default()
+        },
+        plugin_settings: args.settings.clone(),
+        search_path: PluginSearchPath::from_env(),
+    };
+    let mut host = Host::new(config);
+    for spec in &args.plugins {
+        host.load_plugin(spec)
+            .map_err(|e| Failure::Start(anyhow::Error::new(e)))?;
+    }
+    if let Some(scene) = &args.scene {
+        host.load_scene(scene)
+            .map_err(|e| Failure::Start(anyhow::Error::new(e)))?;
+    }
+
+    let frames = if args.headless {
+        let dt = 1.0 / args.fixed_hz;
+        let mut frames = 0u64;
+        while args.frames.is_none_or(|n| frames < n) {
+            frames += 1;
+            if host.frame(dt).quit {
+                break;
+            }
+        }
+        frames
+    } else {
+        let options = WindowOptions {
+            size: args.size,
+            frames: args.frames,
+            ..Default::default()
+        };
+        run_windowed(&mut host, options)
+            .map_err(|e| Failure::Start(anyhow::Error::new(e)))?
+            .frames
+    };
+    host.shutdown();
+    tracing::info!(frames, ticks = host.time().ticks, "run finished");
+
+    if let Some(path) = &args.dump_state {
+        let text = serde_json::to_string_pretty(&host.dump_state())
+            .context("could not serialize the state dump")
+            .map_err(Failure::Run)?;
+        write_atomically(path, text.as_bytes())
+            .with_context(|| format!("could not write the state dump to `{}`", path.display()))
+            .map_err(Failure::Run)?;
+    }
+    if let Some(path) = &args.save_scene {
+        host.save_scene(path)
+            .map_err(|e| Failure::Run(anyhow::Error::new(e)))?;
+    }
+    let faults: Vec<String> = host
+        .plugins()
+        .iter()
+        .filter_map(|p| match p.status() {
+            PluginStatus::Faulted { stage, message } => Some(format!(
+                "plugin `{}` faulted in {stage}: {message}",
+                p.name()
+            )),
+            PluginStatus::Running => None,
+        })
+        .collect();
+    if !faults.is_empty() {
+        return Err(Failure::Run(anyhow::anyhow!(faults.join("; "))));
+    }
+    Ok(())
+}
+
+fn list_plugins() {
+    let search = PluginSearchPath::from_env();
+    println!("plugin search path (first match wins):");
+    for dir in search.dirs() {
+        println!("  {}", dir.display());
+        let Ok(entries) = std::fs::read_dir(dir) else {
+            continue;
+        };
+        let mut found: Vec<String> = entries
+            .filter_map(|e| e.ok())
+            .map(|e| e.path())
+            .filter(|p| {
+                p.file_name()
+                    .and_then(|n| n.to_str())
+                    .is_some_and(|n| n.ends_with(std::env::consts::DLL_SUFFIX))
+            })
+            .map(|p| plugin_search::name_from_path(&p))
+            .collect();
+        found.sort();
+        for name in found {
+            println!("    {name}");
+        }
+    }
+}

@@ -1,0 +1,157 @@
+//! [`HeadlessHost`]: a host with no window and no GPU, for tests and batch runs.
+
+use std::path::Path;
+
+use onyx_plugin_api::{Entity, Event, Name, Plugin};
+
+use crate::plugins::{PluginLoadError, PluginStatus};
+use crate::scene::SceneError;
+use crate::world::entity_id::to_api;
+use crate::{FrameReport, Host, HostConfig};
+
+/// A [`Host`] stepped by hand with a fixed frame time (one fixed step per frame by default),
+/// so runs are deterministic.
+///
+/// ```
+/// use onyx_runtime::HeadlessHost;
+/// use onyx_plugin_api::{Ctx, Name, Plugin, Transform};
+///
+/// #[derive(Default)]
+/// struct Spawner;
+/// impl Plugin for Spawner {
+///     fn on_init(&mut self, ctx: &mut Ctx) {
+///         ctx.spawn((Name::new("box"), Transform::from_xyz(0.0, 1.0, 0.0))).unwrap();
+///     }
+/// }
+///
+/// let mut host = HeadlessHost::new();
+/// host.add_plugin("spawner", Spawner).unwrap();
+/// host.step(3);
+/// assert!(host.find::<Transform>("box").is_some());
+/// ```
+pub struct HeadlessHost {
+    host: Host,
+    frame_time: f64,
+}
+
+impl Default for HeadlessHost {
+    fn default() -> Self {
+        Self::new()
+    }
+}
+
+impl HeadlessHost {
+    /// A headless host with the default configuration (60 Hz).
+    pub fn new() -> Self {
+        Self::with_config(HostConfig::default())
+    }
+
+    /// A headless host with `config`; each frame lasts one fixed step.
+    pub fn with_config(config: HostConfig) -> Self {
+        let host = Host::new(config);
+        let frame_time = host.clock_ref_fixed_delta();
+        Self { host, frame_time }
+    }
+
+    /// Sets the simulated duration of each frame, seconds.
+    pub fn set_frame_time(&mut self, seconds: f64) {
+        self.frame_time = seconds;
+    }
+
+    /// Adds an in-process plugin (through the same ABI adapter as a library).
+    pub fn add_plugin<P: Plugin>(
+        &mut self,
+        name: &'static str,
+        plugin: P,
+    ) -> Result<(), PluginLoadError> {
+        self.host.add_plugin(name, plugin)
+    }
+
+    /// Loads a plugin by library path or NAME. Returns its name.
+    pub fn load_plugin(&mut self, spec: &str) -> Result<String, PluginLoadError> {
+        self.host.load_plugin(spec)
+    }
+
+    /// Loads the plugin library at `path`. Returns its name.
+    pub fn load_plugin_file(&mut self, path: &Path) -> Result<String, PluginLoadError> {
+        self.host.load_plugin_file(path)
+    }
+
+    /// Spawns the entities of a scene file.
+    pub fn load_scene(&mut self, path: &Path) -> Result<usize, SceneError> {
+        self.host.load_scene(path)
+    }
+
+    /// Runs up to `frames` frames, stopping after a frame in which quit was requested.
+    /// Returns the number of frames run.
+    pub fn step(&mut self, frames: u32) -> u32 {
+        for n in 0..frames {
+            if self.host.frame(self.frame_time).quit {
+                return n + 1;
+            }
+        }
+        frames
+    }
+
+    /// Runs one frame that lasted `seconds`.
+    pub fn step_with(&mut self, seconds: f64) -> FrameReport {
+        self.host.frame(seconds)
+    }
+
+    /// Queues an event (input, window, custom…) for the next frame.
+    pub fn inject(&mut self, event: impl Into<Event>) {
+        self.host.push_event(event);
+    }
+
+    /// The world.
+    pub fn world(&self) -> &hecs::World {
+        self.host.world()
+    }
+
+    /// The first entity named `name` that has a `T`, with a copy of it.
+    pub fn find<T: hecs::Component + Clone>(&self, name: &str) -> Option<(Entity, T)> {
+        let mut query = self.host.world().query::<(hecs::Entity, &Name, &T)>();
+        let found = query
+            .iter()
+            .filter(|(_, n, _)| n.as_str() == name)
+            .min_by_key(|(e, _, _)| e.to_bits())
+            .map(|(e, _, value)| (to_api(e), value.clone()));
+        found
+    }
+
+    /// A copy of `entity`'s `T`.
+    pub fn get<T: hecs::Component + Clone>(&self, entity: Entity) -> Option<T> {
+        let e = crate::world::entity_id::to_hecs(entity)?;
+        self.host.world().get::<&T>(e).ok().map(|v| (*v).clone())
+    }
+
+    /// The status of plugin `name`.
+    pub fn plugin_status(&self, name: &str) -> Option<&PluginStatus> {
+        self.host.plugin(name).map(|p| p.status())
+    }
+
+    /// Whether a plugin asked to quit.
+    pub fn quit_requested(&self) -> bool {
+        self.host.quit_requested()
+    }
+
+    /// The state as JSON, as `onyx run --dump-state` writes it.
+    pub fn dump_state(&self) -> serde_json::Value {
+        self.host.dump_state()
+    }
+
+    /// The host inside.
+    pub fn host(&self) -> &Host {
+        &self.host
+    }
+
+    /// The host inside, mutably.
+    pub fn host_mut(&mut self) -> &mut Host {
+        &mut self.host
+    }
+
+    /// Detaches every plugin (also done on drop).
+    pub fn shutdown(&mut self) {
+        self.host.shutdown();
+    }
+}

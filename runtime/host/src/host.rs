@@ -1,0 +1,355 @@
+//! [`Host`]: the world, the clock, the event dispatcher and the plugins, one frame at a time.
+
+use std::path::Path;
+
+use onyx_plugin_api::host::PluginInstance;
+use onyx_plugin_api::{AttachInfo, Event, Flow, PlatformEvent, Plugin, Time, WindowEvent};
+
+use crate::clock::FixedClock;
+use crate::plugins::plugin_search::looks_like_path;
+use crate::plugins::{
+    open_library, PluginLoadError, PluginOrigin, PluginSearchPath, PluginSlot, PluginStatus, Stage,
+};
+use crate::scene::{self, SceneError};
+use crate::state_dump::dump_state;
+use crate::world::HostState;
+use crate::HostConfig;
+
+/// What one frame did.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct FrameReport {
+    /// Fixed steps run.
+    pub fixed_steps: u32,
+    /// Whether a plugin or the window asked to quit.
+    pub quit: bool,
+}
+
+/// The host runtime without a window: drive it with [`Host::frame`]. The windowed runner and
+/// [`HeadlessHost`](crate::HeadlessHost) both wrap one.
+///
+/// Each frame, in order: pending events are folded into the input state and dispatched
+/// (`on_event`, plus `on_resize` for resizes) → `on_fixed_update` once per fixed step →
+/// `on_update` → `on_render` → `draw_gui`. Plugins are called in load order; `on_detach` runs
+/// in reverse load order at [`Host::shutdown`].
+pub struct Host {
+    state: HostState,
+    plugins: Vec<PluginSlot>,
+    plugin_settings: Vec<(String, String, String)>,
+    search_path: PluginSearchPath,
+    initialized: bool,
+    shut_down: bool,
+}
+
+impl Host {
+    /// A host with an empty world.
+    pub fn new(config: HostConfig) -> Self {
+        Self {
+            state: HostState::new(FixedClock::new(config.clock)),
+            plugins: Vec::new(),
+            plugin_settings: config.plugin_settings,
+            search_path: config.search_path,
+            initialized: false,
+            shut_down: false,
+        }
+    }
+
+    // ----- plugins -----
+
+    /// Loads a plugin given as a library path or as a NAME looked up in the search path
+    /// (see [`PluginSearchPath`]). Returns the plugin's name.
+    pub fn load_plugin(&mut self, spec: &str) -> Result<String, PluginLoadError> {
+        if looks_like_path(spec) {
+            return self.load_plugin_file(Path::new(spec));
+        }
+        match self.search_path.find(spec) {
+            Ok(path) => self.load_plugin_file(&path),
+            Err(searched) => Err(self.report(PluginLoadError::NotFound {
+                name: spec.to_owned(),
+                searched,
+            })),
+        }
+    }
+
+    /// Loads the plugin library at `path` (through a fresh copy). Returns its name.
+    pub fn load_plugin_file(&mut self, path: &Path) -> Result<String, PluginLoadError> {
+        let (library, loaded_from) = open_library(path).map_err(|e| self.report(e))?;
+        let name = library.name().to_owned();
+        if self.plugin(&name).is_some() {
+            return Err(self.report(PluginLoadError::AlreadyLoaded { plugin: name }));
+        }
+        let instance = library.instantiate().map_err(|e| {
+            self.report(PluginLoadError::ConstructorFailed {
+                plugin: name.clone(),
+                message: e.to_string(),
+            })
+        })?;
+        tracing::info!(plugin = %name, version = library.version(), path = %path.display(), "loaded plugin library");
+        let origin = PluginOrigin::Library {
+            path: path.to_path_buf(),
+            loaded_from,
+        };
+        self.attach(name.clone(), origin, instance)?;
+        Ok(name)
+    }
+
+    /// Adds an in-process plugin value under `name`. It goes through the same ABI adapter
+    /// as a loaded library.
+    pub fn add_plugin<P: Plugin>(
+        &mut self,
+        name: &'static str,
+        plugin: P,
+    ) -> Result<(), PluginLoadError> {
+        if self.plugin(name).is_some() {
+            return Err(self.report(PluginLoadError::AlreadyLoaded {
+                plugin: name.to_owned(),
+            }));
+        }
+        let instance = PluginInstance::from_plugin(name, plugin).map_err(|e| {
+            self.report(PluginLoadError::ConstructorFailed {
+                plugin: name.to_owned(),
+                message: e.to_string(),
+            })
+        })?;
+        self.attach(name.to_owned(), PluginOrigin::InProcess, instance)
+    }
+
+    fn attach(
+        &mut self,
+        name: String,
+        origin: PluginOrigin,
+        instance: PluginInstance,
+    ) -> Result<(), PluginLoadError> {
+        let settings: Vec<(String, String)> = self
+            .plugin_settings
+            .iter()
+            .filter(|(plugin, _, _)| *plugin == name)
+            .map(|(_, k, v)| (k.clone(), v.clone()))
+            .collect();
+        let mut slot = PluginSlot {
+            name: name.clone(),
+            origin,
+            instance,
+            status: PluginStatus::Running,
+            settings,
+        };
+        let info = AttachInfo {
+            reload: false,
+            settings: slot.settings.clone(),
+        };
+        let attached = {
+            let state = &mut self.state;
+            let mut cx = crate::world::CallContext::new(state, &name);
+            slot.instance.on_attach(&mut cx, &info)
+        };
+        if let Err(error) = attached {
+            return Err(self.report(PluginLoadError::AttachFailed {
+                plugin: name,
+                message: error.to_string(),
+            }));
+        }
+        self.state
+            .pending_events
+            .push(Event::Platform(PlatformEvent::PluginLoaded {
+                plugin: name.clone(),
+            }));
+        if self.initialized {
+            slot.call(&mut self.state, Stage::Init, |p, cx| p.on_init(cx));
+        }
+        self.plugins.push(slot);
+        Ok(())
+    }
+
+    /// Logs a load error and raises it as a platform event; returns it.
+    fn report(&mut self, error: PluginLoadError) -> PluginLoadError {
+        tracing::error!("{error}");
+        self.state
+            .pending_events
+            .push(Event::Platform(PlatformEvent::Error {
+                message: error.to_string(),
+            }));
+        error
+    }
+
+    /// Detaches and removes the plugin `name`. Returns `false` if there is none.
+    pub fn unload_plugin(&mut self, name: &str) -> bool {
+        let Some(index) = self.plugins.iter().position(|p| p.name == name) else {
+            return false;
+        };
+        let mut slot = self.plugins.remove(index);
+        slot.call(&mut self.state, Stage::Detach, |p, cx| p.on_detach(cx));
+        self.state
+            .pending_events
+            .push(Event::Platform(PlatformEvent::PluginUnloaded {
+                plugin: name.to_owned(),
+            }));
+        true
+    }
+
+    /// The loaded plugins, in load (= call) order.
+    pub fn plugins(&self) -> &[PluginSlot] {
+        &self.plugins
+    }
+
+    /// The plugin named `name`.
+    pub fn plugin(&self, name: &str) -> Option<&PluginSlot> {
+        self.plugins.iter().find(|p| p.name == name)
+    }
+
+    // ----- the frame -----
+
+    /// Calls `on_init` on every plugin, once. [`Host::frame`] does it on the first frame;
+    /// plugins added later are initialised as they attach.
+    pub fn init(&mut self) {
+        if self.initialized {
+            return;
+        }
+        self.initialized = true;
+        for slot in &mut self.plugins {
+            slot.call(&mut self.state, Stage::Init, |p, cx| p.on_init(cx));
+        }
+    }
+
+    /// Queues an event for the next dispatch (input events also update the input state then).
+    pub fn push_event(&mut self, event: impl Into<Event>) {
+        self.state.pending_events.push(event.into());
+    }
+
+    /// Runs one frame that took `real_dt` seconds of real time.
+    pub fn frame(&mut self, real_dt: f64) -> FrameReport {
+        self.init();
+        self.dispatch_events();
+        let steps = self.state.clock.begin_frame(real_dt);
+        for _ in 0..steps {
+            for slot in &mut self.plugins {
+                slot.call(&mut self.state, Stage::FixedUpdate, |p, cx| {
+                    p.on_fixed_update(cx)
+                });
+            }
+            self.state.clock.tick();
+        }
+        let dt = self.state.clock.time().delta;
+        for slot in &mut self.plugins {
+            let flow = slot.call(&mut self.state, Stage::Update, |p, cx| p.on_update(cx, dt));
+            if flow == Some(Flow::Quit) {
+                tracing::info!(plugin = %slot.name, "plugin returned Flow::Quit");
+                self.state.quit_requested = true;
+            }
+        }
+        for slot in &mut self.plugins {
+            slot.call(&mut self.state, Stage::Render, |p, cx| p.on_render(cx));
+        }
+        for slot in &mut self.plugins {
+            slot.call(&mut self.state, Stage::DrawGui, |p, cx| p.draw_gui(cx));
+        }
+        self.state.input.end_frame();
+        self.state.clock.end_frame();
+        FrameReport {
+            fixed_steps: steps,
+            quit: self.state.quit_requested,
+        }
+    }
+
+    fn dispatch_events(&mut self) {
+        let events = std::mem::take(&mut self.state.pending_events);
+        for event in &events {
+            match event {
+                Event::Input(input) => self.state.input.apply(input),
+                Event::Window(WindowEvent::Focused(false)) => self.state.input.release_all(),
+                _ => {}
+            }
+        }
+        for event in &events {
+            for slot in &mut self.plugins {
+                slot.call(&mut self.state, Stage::Event, |p, cx| p.on_event(cx, event));
+            }
+            match event {
+                Event::Window(WindowEvent::Resized { width, height }) => {
+                    let (w, h) = (*width, *height);
+                    for slot in &mut self.plugins {
+                        slot.call(&mut self.state, Stage::Resize, |p, cx| {
+                            p.on_resize(cx, w, h)
+                        });
+                    }
+                }
+                Event::Window(WindowEvent::CloseRequested) => self.state.quit_requested = true,
+                _ => {}
+            }
+        }
+    }
+
+    /// Whether a plugin or the window asked to quit.
+    pub fn quit_requested(&self) -> bool {
+        self.state.quit_requested
+    }
+
+    /// Calls `on_detach` on every running plugin, in reverse load order, once.
+    pub fn shutdown(&mut self) {
+        if self.shut_down {
+            return;
+        }
+        self.shut_down = true;
+        for slot in self.plugins.iter_mut().rev() {
+            slot.call(&mut self.state, Stage::Detach, |p, cx| p.on_detach(cx));
+        }
+    }
+
+    // ----- world, time, scenes -----
+
+    /// The world.
+    pub fn world(&self) -> &hecs::World {
+        &self.state.world
+    }
+
+    /// The world, mutably (host-side tools; plugins go through `Ctx`).
+    pub fn world_mut(&mut self) -> &mut hecs::World {
+        &mut self.state.world
+    }
+
+    /// The clock as plugins see it.
+    pub fn time(&self) -> Time {
+        self.state.clock.time()
+    }
+
+    /// Length of one fixed step, seconds.
+    pub(crate) fn clock_ref_fixed_delta(&self) -> f64 {
+        self.state.clock.fixed_delta()
+    }
+
+    /// The clock.
+    pub fn clock_mut(&mut self) -> &mut FixedClock {
+        &mut self.state.clock
+    }
+
+    /// Spawns the entities of the scene file at `path` (added to what is there). On error
+    /// the world is unchanged and the error is also raised as a platform event.
+    pub fn load_scene(&mut self, path: &Path) -> Result<usize, SceneError> {
+        let loaded = scene::read_scene(path)
+            .and_then(|file| scene::spawn_scene(&mut self.state.world, &file, path));
+        match &loaded {
+            Ok(n) => tracing::info!(path = %path.display(), entities = n, "loaded scene"),
+            Err(error) => {
+                tracing::error!("{error}");
+                self.push_event(PlatformEvent::Error {
+                    message: error.to_string(),
+                });
+            }
+        }
+        loaded
+    }
+
+    /// Saves the world to `path` atomically.
+    pub fn save_scene(&self, path: &Path) -> Result<(), SceneError> {
+        scene::write_scene(&scene::scene_from_world(&self.state.world), path)
+    }
+
+    /// The state as JSON (see [`crate::state_dump`]).
+    pub fn dump_state(&self) -> serde_json::Value {
+        dump_state(&self.state, &self.plugins)
+    }
+}
+
+impl Drop for Host {
+    fn drop(&mut self) {
+        self.shutdown();
+    }
+}

@@ -1,0 +1,21 @@
+//! Plugins: finding, loading, and calling them.
+//!
+//! - `plugin_search.rs`: [`PluginSearchPath`], NAME → library file.
+//! - `plugin_loader.rs`: [`open_library`], fresh-copy loading.
+//! - `plugin_load_error.rs`: [`PluginLoadError`], one sentence per failure.
+//! - `plugin_slot.rs`: [`PluginSlot`], a loaded plugin and its fault handling.
+//! - `plugin_status.rs`, `stage.rs`: running/faulted, and which lifecycle method.
+
+mod plugin_load_error;
+mod plugin_loader;
+pub mod plugin_search;
+mod plugin_slot;
+mod plugin_status;
+mod stage;
+
+pub use plugin_load_error::PluginLoadError;
+pub use plugin_loader::open_library;
+pub use plugin_search::{PluginSearchPath, PLUGIN_PATH_VAR};
+pub use plugin_slot::{PluginOrigin, PluginSlot};
+pub use plugin_status::PluginStatus;
+pub use stage::Stage;

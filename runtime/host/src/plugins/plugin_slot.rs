@@ -1,0 +1,95 @@
+//! [`PluginSlot`]: one loaded plugin, its origin and its status.
+
+use std::path::PathBuf;
+
+use onyx_plugin_api::host::{CallError, PluginInstance};
+use onyx_plugin_api::{Event, PlatformEvent};
+
+use super::{PluginStatus, Stage};
+use crate::world::{CallContext, HostState};
+
+/// Where a plugin came from.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum PluginOrigin {
+    /// Loaded from a library file: the file given, and the fresh copy actually opened.
+    Library {
+        /// The file the user named.
+        path: PathBuf,
+        /// The unique copy that was opened.
+        loaded_from: PathBuf,
+    },
+    /// An in-process value (tests, embedding).
+    InProcess,
+}
+
+/// A plugin the host calls each frame, until it faults.
+pub struct PluginSlot {
+    pub(crate) name: String,
+    pub(crate) origin: PluginOrigin,
+    pub(crate) instance: PluginInstance,
+    pub(crate) status: PluginStatus,
+    pub(crate) settings: Vec<(String, String)>,
+}
+
+impl PluginSlot {
+    /// The plugin's name.
+    pub fn name(&self) -> &str {
+        &self.name
+    }
+
+    /// Where it came from.
+    pub fn origin(&self) -> &PluginOrigin {
+        &self.origin
+    }
+
+    /// Running or faulted.
+    pub fn status(&self) -> &PluginStatus {
+        &self.status
+    }
+
+    /// Calls `f` on the plugin unless it has faulted; on a panic or error, marks it faulted,
+    /// logs it and queues a `PluginFaulted` platform event. Returns `None` if not called or
+    /// failed.
+    pub(crate) fn call<T>(
+        &mut self,
+        state: &mut HostState,
+        stage: Stage,
+        f: impl FnOnce(&mut PluginInstance, &mut CallContext<'_>) -> Result<T, CallError>,
+    ) -> Option<T> {
+        if self.status.is_faulted() {
+            return None;
+        }
+        let result = {
+            let mut cx = CallContext::new(state, &self.name);
+            f(&mut self.instance, &mut cx)
+        };
+        match result {
+            Ok(value) => Some(value),
+            Err(error) => {
+                self.fault(state, stage, &error);
+                None
+            }
+        }
+    }
+
+    pub(crate) fn fault(&mut self, state: &mut HostState, stage: Stage, error: &CallError) {
+        let message = match error {
+            CallError::Panicked { message } => format!("panicked: {message}"),
+            CallError::Returned { message } => message.clone(),
+        };
+        tracing::error!(
+            plugin = %self.name,
+            %stage,
+            "plugin `{}` faulted in {stage}: {message}; it will not be called again",
+            self.name
+        );
+        state
+            .pending_events
+            .push(Event::Platform(PlatformEvent::PluginFaulted {
+                plugin: self.name.clone(),
+                stage: stage.as_str().to_owned(),
+                message: message.clone(),
+            }));
+        self.status = PluginStatus::Faulted { stage, message };
+    }
+}

@@ -1,0 +1,56 @@
+//! [`Stage`]: a lifecycle method, for fault reports.
+
+/// A plugin lifecycle method.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Stage {
+    /// Building the plugin object.
+    Construct,
+    /// `on_attach`.
+    Attach,
+    /// `on_init`.
+    Init,
+    /// `on_event`.
+    Event,
+    /// `on_fixed_update`.
+    FixedUpdate,
+    /// `on_update`.
+    Update,
+    /// `on_render`.
+    Render,
+    /// `draw_gui`.
+    DrawGui,
+    /// `on_resize`.
+    Resize,
+    /// `on_detach`.
+    Detach,
+    /// `save_state`.
+    SaveState,
+    /// `load_state`.
+    LoadState,
+}
+
+impl Stage {
+    /// The method's name as a plugin author wrote it.
+    pub fn as_str(self) -> &'static str {
+        match self {
+            Stage::Construct => "constructor",
+            Stage::Attach => "on_attach",
+            Stage::Init => "on_init",
+            Stage::Event => "on_event",
+            Stage::FixedUpdate => "on_fixed_update",
+            Stage::Update => "on_update",
+            Stage::Render => "on_render",
+            Stage::DrawGui => "draw_gui",
+            Stage::Resize => "on_resize",
+            Stage::Detach => "on_detach",
+            Stage::SaveState => "save_state",
+            Stage::LoadState => "load_state",
+        }
+    }
+}
+
+impl std::fmt::Display for Stage {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(self.as_str())
+    }
+}

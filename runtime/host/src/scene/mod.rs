@@ -1,0 +1,15 @@
+//! Scene files: RON, versioned, loaded with line/column errors, saved atomically.
+//!
+//! - `scene_file.rs`: [`SceneFile`], the format.
+//! - `scene_io.rs`: parse, spawn into a world, capture from a world, atomic write.
+//! - `scene_error.rs`: [`SceneError`].
+
+mod scene_error;
+mod scene_file;
+mod scene_io;
+
+pub use scene_error::SceneError;
+pub use scene_file::{SceneComponent, SceneEntity, SceneFile, SCENE_FORMAT_VERSION};
+pub use scene_io::{
+    parse_scene, read_scene, scene_from_world, spawn_scene, write_atomically, write_scene,
+};

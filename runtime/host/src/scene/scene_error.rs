@@ -1,0 +1,62 @@
+//! [`SceneError`]: why a scene could not be loaded or saved.
+
+use std::path::PathBuf;
+
+/// A scene that could not be read or written. Loading never changes the world on error;
+/// saving never damages the previous file.
+#[derive(Debug, thiserror::Error)]
+#[non_exhaustive]
+pub enum SceneError {
+    /// The file could not be read or written.
+    #[error("could not {action} scene `{}`: {source}", .path.display())]
+    Io {
+        /// "read" or "write".
+        action: &'static str,
+        /// The file.
+        path: PathBuf,
+        /// The I/O error.
+        #[source]
+        source: std::io::Error,
+    },
+    /// The file is not valid scene RON.
+    #[error("scene `{}` is malformed at line {line}, column {column}: {message}", .path.display())]
+    Parse {
+        /// The file.
+        path: PathBuf,
+        /// 1-based line.
+        line: usize,
+        /// 1-based column.
+        column: usize,
+        /// The parser's message.
+        message: String,
+    },
+    /// The file is of a format version this host does not read.
+    #[error(
+        "scene `{}` has format version {found}, this host reads version {supported}",
+        .path.display()
+    )]
+    UnsupportedVersion {
+        /// The file.
+        path: PathBuf,
+        /// Its version.
+        found: u32,
+        /// The version this host reads.
+        supported: u32,
+    },
+    /// A value in the file is not acceptable.
+    #[error("scene `{}`, entity #{index}: {message}", .path.display())]
+    InvalidEntity {
+        /// The file.
+        path: PathBuf,
+        /// 0-based index of the entity in the file.
+        index: usize,
+        /// What is wrong.
+        message: String,
+    },
+    /// The world could not be serialized.
+    #[error("could not serialize the scene: {message}")]
+    Serialize {
+        /// The serializer's message.
+        message: String,
+    },
+}

@@ -1,0 +1,210 @@
+//! [`run_windowed`]: drives a [`Host`] from a winit window.
+
+use std::time::{Duration, Instant};
+
+use onyx_plugin_api::{InputEvent, WindowEvent as OnyxWindowEvent};
+use winit::application::ApplicationHandler;
+use winit::dpi::PhysicalSize;
+use winit::event::{DeviceEvent, DeviceId, WindowEvent};
+use winit::event_loop::{ActiveEventLoop, ControlFlow, EventLoop};
+use winit::window::{Window, WindowId};
+
+use super::winit_input::{key_event, map_button, scroll_event};
+use super::WindowError;
+use crate::Host;
+
+/// How the window is opened and how long it runs.
+#[derive(Clone, Debug)]
+pub struct WindowOptions {
+    /// Title bar text.
+    pub title: String,
+    /// Initial inner size in physical pixels.
+    pub size: (u32, u32),
+    /// Stop after this many frames (`None`: until closed or a plugin quits).
+    pub frames: Option<u64>,
+    /// Frames per second the loop aims for (without a renderer there is no vsync to pace it).
+    pub target_fps: f64,
+}
+
+impl Default for WindowOptions {
+    fn default() -> Self {
+        Self {
+            title: "Onyx".into(),
+            size: (1280, 720),
+            frames: None,
+            target_fps: 60.0,
+        }
+    }
+}
+
+/// What a windowed run did.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct WindowedSummary {
+    /// Frames run.
+    pub frames: u64,
+    /// Last size of the window's drawable area.
+    pub final_size: (u32, u32),
+}
+
+struct App<'h> {
+    host: &'h mut Host,
+    options: WindowOptions,
+    window: Option<Window>,
+    error: Option<WindowError>,
+    last_frame: Option<Instant>,
+    next_frame: Instant,
+    summary: WindowedSummary,
+}
+
+/// Opens a window and runs `host` in it until a plugin quits, the window is closed, or
+/// `options.frames` frames have run. Must be called on the main thread, once per process
+/// (winit allows one event loop).
+pub fn run_windowed(
+    host: &mut Host,
+    options: WindowOptions,
+) -> Result<WindowedSummary, WindowError> {
+    let event_loop = EventLoop::new().map_err(WindowError::EventLoop)?;
+    let mut app = App {
+        host,
+        options,
+        window: None,
+        error: None,
+        last_frame: None,
+        next_frame: Instant::now(),
+        summary: WindowedSummary::default(),
+    };
+    event_loop
+        .run_app(&mut app)
+        .map_err(WindowError::EventLoop)?;
+    match app.error {
+        Some(error) => Err(error),
+        None => Ok(app.summary),
+    }
+}
+
+impl App<'_> {
+    fn frame_interval(&self) -> Duration {
+        Duration::from_secs_f64(1.0 / self.options.target_fps.max(1.0))
+    }
+
+    fn run_frame(&mut self, event_loop: &ActiveEventLoop) {
+        let now = Instant::now();
+        let dt = self
+            .last_frame
+            .map(|t| now.duration_since(t).as_secs_f64())
+            .unwrap_or(1.0 / self.options.target_fps.max(1.0));
+        self.last_frame = Some(now);
+        let report = self.host.frame(dt);
+        self.summary.frames += 1;
+        let done = self
+            .options
+            .frames
+            .is_some_and(|n| self.summary.frames >= n);
+        if report.quit || done {
+            event_loop.exit();
+        }
+    }
+}
+
+impl ApplicationHandler for App<'_> {
+    fn resumed(&mut self, event_loop: &ActiveEventLoop) {
+        if self.window.is_some() {
+            return;
+        }
+        let (w, h) = self.options.size;
+        let attributes = Window::default_attributes()
+            .with_title(self.options.title.clone())
+            .with_inner_size(PhysicalSize::new(w.max(1), h.max(1)));
+        match event_loop.create_window(attributes) {
+            Ok(window) => {
+                let size = window.inner_size();
+                tracing::info!(width = size.width, height = size.height, "window opened");
+                self.summary.final_size = (size.width, size.height);
+                self.host.push_event(OnyxWindowEvent::Resized {
+                    width: size.width,
+                    height: size.height,
+                });
+                self.window = Some(window);
+                self.next_frame = Instant::now();
+            }
+            Err(error) => {
+                self.error = Some(WindowError::CreateWindow(error));
+                event_loop.exit();
+            }
+        }
+    }
+
+    fn window_event(&mut self, event_loop: &ActiveEventLoop, _id: WindowId, event: WindowEvent) {
+        match event {
+            WindowEvent::CloseRequested => {
+                self.host.push_event(OnyxWindowEvent::CloseRequested);
+                // Run one last frame so plugins see the event, then leave.
+                self.run_frame(event_loop);
+                event_loop.exit();
+            }
+            WindowEvent::Resized(size) => {
+                self.summary.final_size = (size.width, size.height);
+                self.host.push_event(OnyxWindowEvent::Resized {
+                    width: size.width,
+                    height: size.height,
+                });
+            }
+            WindowEvent::Focused(focused) => {
+                self.host.push_event(OnyxWindowEvent::Focused(focused))
+            }
+            WindowEvent::KeyboardInput { event, .. } => {
+                self.host
+                    .push_event(key_event(event.physical_key, event.state, event.repeat));
+                if event.state.is_pressed() {
+                    if let Some(text) = event.text.filter(|t| !t.chars().all(char::is_control)) {
+                        self.host.push_event(InputEvent::Text(text.to_string()));
+                    }
+                }
+            }
+            WindowEvent::MouseInput { state, button, .. } => {
+                self.host.push_event(InputEvent::MouseButton {
+                    button: map_button(button),
+                    pressed: state.is_pressed(),
+                })
+            }
+            WindowEvent::CursorMoved { position, .. } => {
+                self.host.push_event(InputEvent::CursorMoved {
+                    x: position.x as f32,
+                    y: position.y as f32,
+                })
+            }
+            WindowEvent::MouseWheel { delta, .. } => self.host.push_event(scroll_event(delta)),
+            _ => {}
+        }
+    }
+
+    fn device_event(&mut self, _: &ActiveEventLoop, _: DeviceId, event: DeviceEvent) {
+        if let DeviceEvent::MouseMotion { delta } = event {
+            self.host.push_event(InputEvent::MouseMotion {
+                dx: delta.0 as f32,
+                dy: delta.1 as f32,
+            });
+        }
+    }
+
+    fn about_to_wait(&mut self, event_loop: &ActiveEventLoop) {
+        if self.window.is_none() {
+            return;
+        }
+        let now = Instant::now();
+        if now >= self.next_frame {
+            self.run_frame(event_loop);
+            let interval = self.frame_interval();
+            self.next_frame += interval;
+            if self.next_frame < now {
+                self.next_frame = now + interval;
+            }
+        }
+        event_loop.set_control_flow(ControlFlow::WaitUntil(self.next_frame));
+    }
+
+    fn exiting(&mut self, _: &ActiveEventLoop) {
+        tracing::info!(frames = self.summary.frames, "window closed");
+        self.window = None;
+    }
+}

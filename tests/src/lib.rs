@@ -1,0 +1,131 @@
+//! Support for the end-to-end tests: where the built plugin libraries and the `onyx` binary
+//! are, and small recording plugins.
+//!
+//! The plugins are built as real cdylibs by `cargo build --workspace` (the README's test
+//! command runs it before `cargo test`), into the same target directory as the tests: a
+//! nested `cargo build` inside a test would block on cargo's target-directory lock.
+
+use std::path::PathBuf;
+use std::sync::{Arc, Mutex};
+
+use onyx_plugin_api::{AttachInfo, Ctx, Event, Flow, Plugin, PluginError};
+
+/// The target directory of this build (`target/debug`), from the test executable's path.
+pub fn target_dir() -> PathBuf {
+    let exe = std::env::current_exe().expect("the test knows its own path");
+    let deps = exe
+        .parent()
+        .expect("test executables live in target/<profile>/deps");
+    deps.parent().expect("deps has a parent").to_path_buf()
+}
+
+/// The built library of workspace crate `crate_name` (`hello`, `fixture-faulty`, …).
+///
+/// Panics with the command to run when it has not been built.
+pub fn plugin_library(crate_name: &str) -> PathBuf {
+    let path = target_dir().join(onyx_runtime::plugins::plugin_search::library_file_name(
+        crate_name,
+    ));
+    assert!(
+        path.is_file(),
+        "`{}` is missing: build the plugins first with `cargo build --workspace` \
+         (the README's test command does)",
+        path.display()
+    );
+    path
+}
+
+/// The `onyx` binary of this build.
+pub fn onyx_binary() -> PathBuf {
+    let path = target_dir().join(format!("onyx{}", std::env::consts::EXE_SUFFIX));
+    assert!(
+        path.is_file(),
+        "`{}` is missing: run `cargo build --workspace` first",
+        path.display()
+    );
+    path
+}
+
+/// A shared, ordered log of what recording plugins saw.
+pub type Journal = Arc<Mutex<Vec<String>>>;
+
+/// A new empty journal.
+pub fn journal() -> Journal {
+    Arc::new(Mutex::new(Vec::new()))
+}
+
+/// The entries of `journal` so far.
+pub fn entries(journal: &Journal) -> Vec<String> {
+    journal.lock().expect("journal lock").clone()
+}
+
+/// An in-process plugin that writes `"<tag>.<stage>"` into a journal for every call
+/// (`"<tag>.on_event:<event>"` for events), and quits after `quit_after` updates if set.
+pub struct Recorder {
+    /// Prefix of this recorder's entries.
+    pub tag: &'static str,
+    /// Where entries go.
+    pub journal: Journal,
+    /// Return `Flow::Quit` from this `on_update` call on (1-based).
+    pub quit_after: Option<u64>,
+    updates: u64,
+}
+
+impl Recorder {
+    /// A recorder tagged `tag` writing to `journal`.
+    pub fn new(tag: &'static str, journal: &Journal) -> Self {
+        Self {
+            tag,
+            journal: journal.clone(),
+            quit_after: None,
+            updates: 0,
+        }
+    }
+
+    fn note(&self, what: impl AsRef<str>) {
+        self.journal
+            .lock()
+            .expect("journal lock")
+            .push(format!("{}.{}", self.tag, what.as_ref()));
+    }
+}
+
+impl Plugin for Recorder {
+    fn on_attach(&mut self, _: &mut Ctx, info: &AttachInfo) -> Result<(), PluginError> {
+        self.note(if info.reload {
+            "on_attach(reload)"
+        } else {
+            "on_attach"
+        });
+        Ok(())
+    }
+    fn on_init(&mut self, _: &mut Ctx) {
+        self.note("on_init");
+    }
+    fn on_event(&mut self, _: &mut Ctx, event: &Event) {
+        self.note(format!("on_event:{event:?}"));
+    }
+    fn on_fixed_update(&mut self, ctx: &mut Ctx) {
+        self.note(format!("on_fixed_update#{}", ctx.time().ticks));
+    }
+    fn on_update(&mut self, _: &mut Ctx, _dt: f32) -> Flow {
+        self.updates += 1;
+        self.note("on_update");
+        match self.quit_after {
+            Some(n) if self.updates >= n => Flow::Quit,
+            _ => Flow::Continue,
+        }
+    }
+    fn on_render(&mut self, _: &mut Ctx) {
+        self.note("on_render");
+    }
+    fn draw_gui(&mut self, _: &mut Ctx) {
+        self.note("draw_gui");
+    }
+    fn on_resize(&mut self, _: &mut Ctx, w: u32, h: u32) {
+        self.note(format!("on_resize:{w}x{h}"));
+    }
+    fn on_detach(&mut self, _: &mut Ctx) {
+        self.note("on_detach");
+    }
+}

@@ -1,0 +1,262 @@
+//! The `onyx` binary: exit codes, one-line reasons, `--dump-state`, help, and a real window
+//! under Xvfb.
+
+use std::path::Path;
+use std::process::{Command, Output};
+
+use onyx_tests::{onyx_binary, target_dir};
+
+fn onyx(args: &[&str]) -> Output {
+    Command::new(onyx_binary())
+        .args(args)
+        .env("ONYX_PLUGIN_PATH", target_dir())
+        .env("RUST_LOG", "warn")
+        .output()
+        .expect("onyx runs")
+}
+
+fn stderr(out: &Output) -> String {
+    String::from_utf8_lossy(&out.stderr).into_owned()
+}
+
+fn read_json(path: &Path) -> serde_json::Value {
+    serde_json::from_str(&std::fs::read_to_string(path).unwrap()).unwrap()
+}
+
+fn entity<'a>(dump: &'a serde_json::Value, name: &str) -> &'a serde_json::Value {
+    dump["entities"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .find(|e| e["name"] == name)
+        .unwrap_or_else(|| panic!("no entity `{name}` in {dump:#}"))
+}
+
+#[test]
+fn headless_run_quits_when_hello_is_asked_and_dumps_the_state() {
+    let dir = tempfile::tempdir().unwrap();
+    let dump_path = dir.path().join("state.json");
+    let dump = dump_path.to_str().unwrap();
+    let out = onyx(&[
+        "run",
+        "--headless",
+        "--plugin",
+        "hello",
+        "--plugin",
+        "spinner",
+        "--plugin",
+        "fixture_faulty",
+        "--set",
+        "hello.quit_after=5",
+        "--frames",
+        "1000",
+        "--dump-state",
+        dump,
+    ]);
+    assert!(
+        out.status.success(),
+        "exit {:?}: {}",
+        out.status,
+        stderr(&out)
+    );
+    let state = read_json(&dump_path);
+    assert_eq!(state["time"]["frame"], 5, "hello quit after 5 frames");
+    let hello = entity(&state, "hello");
+    assert_eq!(hello["components"]["hello.stats"]["updates"], 5);
+    assert_eq!(hello["components"]["Name"], "hello");
+    assert!(hello["id"].is_u64());
+    // Built-in components field by field.
+    let spin = entity(&state, "spinner 0");
+    let t = &spin["components"]["Transform"];
+    assert_eq!(t["translation"].as_array().unwrap().len(), 3);
+    assert_eq!(t["rotation"].as_array().unwrap().len(), 4);
+    assert_eq!(t["scale"], serde_json::json!([1.0, 1.0, 1.0]));
+    // Plugin components: decoded when serde, base64 when raw.
+    assert_eq!(spin["components"]["spinner.spin"]["speed"], 1.0);
+    let faulty = entity(&state, "faulty");
+    assert_eq!(
+        faulty["components"]["fixture_faulty.updates"]["base64"],
+        "BQAAAA=="
+    );
+    let plugins: Vec<&str> = state["plugins"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|p| p["status"].as_str().unwrap())
+        .collect();
+    assert_eq!(plugins, ["running"; 3]);
+}
+
+#[test]
+fn fixed_hz_sets_the_step_rate() {
+    let dir = tempfile::tempdir().unwrap();
+    let dump_path = dir.path().join("state.json");
+    let out = onyx(&[
+        "run",
+        "--headless",
+        "--fixed-hz",
+        "120",
+        "--frames",
+        "12",
+        "--dump-state",
+        dump_path.to_str().unwrap(),
+    ]);
+    assert!(out.status.success(), "{}", stderr(&out));
+    let state = read_json(&dump_path);
+    assert_eq!(state["time"]["ticks"], 12);
+    assert!((state["time"]["fixed_delta"].as_f64().unwrap() - 1.0 / 120.0).abs() < 1e-6);
+}
+
+#[test]
+fn an_unknown_plugin_fails_with_exit_2_and_one_line() {
+    let out = onyx(&[
+        "run",
+        "--headless",
+        "--frames",
+        "1",
+        "--plugin",
+        "does_not_exist",
+    ]);
+    assert_eq!(out.status.code(), Some(2));
+    let err = stderr(&out);
+    let reason: Vec<&str> = err.lines().filter(|l| l.starts_with("onyx:")).collect();
+    assert_eq!(reason.len(), 1, "{err}");
+    assert!(
+        reason[0].contains("plugin `does_not_exist` not found"),
+        "{err}"
+    );
+}
+
+#[test]
+fn a_plugin_fault_during_the_run_gives_exit_1_and_still_dumps() {
+    let dir = tempfile::tempdir().unwrap();
+    let dump_path = dir.path().join("state.json");
+    let out = onyx(&[
+        "run",
+        "--headless",
+        "--frames",
+        "3",
+        "--plugin",
+        "fixture_faulty",
+        "--set",
+        "fixture_faulty.panic_in=on_update",
+        "--dump-state",
+        dump_path.to_str().unwrap(),
+    ]);
+    assert_eq!(out.status.code(), Some(1), "{}", stderr(&out));
+    let err = stderr(&out);
+    assert!(
+        err.lines()
+            .any(|l| l.starts_with("onyx: plugin `fixture_faulty` faulted in on_update")),
+        "{err}"
+    );
+    let state = read_json(&dump_path);
+    assert_eq!(state["plugins"][0]["status"], "faulted");
+    assert_eq!(state["plugins"][0]["stage"], "on_update");
+}
+
+#[test]
+fn a_malformed_scene_fails_with_its_line_and_column() {
+    let dir = tempfile::tempdir().unwrap();
+    let scene = dir.path().join("bad.ron");
+    std::fs::write(&scene, "(version: 1,\n entities: [ (name: Some(\"x\") ]\n)").unwrap();
+    let out = onyx(&[
+        "run",
+        "--headless",
+        "--frames",
+        "1",
+        "--scene",
+        scene.to_str().unwrap(),
+    ]);
+    assert_eq!(out.status.code(), Some(2));
+    assert!(
+        stderr(&out).contains("is malformed at line 2, column"),
+        "{}",
+        stderr(&out)
+    );
+}
+
+#[test]
+fn every_subcommand_has_help() {
+    for args in [&["--help"][..], &["run", "--help"], &["plugins", "--help"]] {
+        let out = onyx(args);
+        assert!(out.status.success(), "{args:?}: {}", stderr(&out));
+        let text = String::from_utf8_lossy(&out.stdout);
+        assert!(text.contains("Usage: onyx"), "{args:?}: {text}");
+    }
+    let run_help = String::from_utf8_lossy(&onyx(&["run", "--help"]).stdout).into_owned();
+    for flag in [
+        "--plugin",
+        "--scene",
+        "--headless",
+        "--frames",
+        "--fixed-hz",
+        "--dump-state",
+        "ONYX_PLUGIN_PATH",
+    ] {
+        assert!(run_help.contains(flag), "run --help lacks {flag}");
+    }
+}
+
+#[test]
+fn plugins_lists_the_search_path_and_what_it_finds() {
+    let out = onyx(&["plugins"]);
+    assert!(out.status.success());
+    let text = String::from_utf8_lossy(&out.stdout);
+    assert!(
+        text.contains(&target_dir().display().to_string()) && text.contains("    spinner"),
+        "{text}"
+    );
+}
+
+/// A real window: winit under Xvfb opens it, the host runs frames in it, resizes reach the
+/// plugins, and it closes cleanly when the run ends.
+#[test]
+fn a_window_opens_runs_frames_and_closes_cleanly_under_xvfb() {
+    let xvfb_run = Path::new("/usr/bin/xvfb-run");
+    assert!(
+        xvfb_run.exists(),
+        "xvfb-run is missing: install the packages listed in the README (the test command does)"
+    );
+    let dir = tempfile::tempdir().unwrap();
+    let dump_path = dir.path().join("state.json");
+    let out = Command::new(xvfb_run)
+        .args(["-a", "-s", "-screen 0 1280x720x24"])
+        .arg(onyx_binary())
+        .args([
+            "run",
+            "--plugin",
+            "hello",
+            "--frames",
+            "20",
+            "--size",
+            "640x360",
+            "--dump-state",
+        ])
+        .arg(&dump_path)
+        .env("ONYX_PLUGIN_PATH", target_dir())
+        .env_remove("WAYLAND_DISPLAY")
+        .env("RUST_LOG", "info")
+        .output()
+        .expect("xvfb-run runs");
+    assert!(
+        out.status.success(),
+        "exit {:?}: {}",
+        out.status,
+        stderr(&out)
+    );
+    let err = stderr(&out);
+    assert!(err.contains("window opened"), "{err}");
+    let state = read_json(&dump_path);
+    let stats = &entity(&state, "hello")["components"]["hello.stats"];
+    assert_eq!(stats["updates"], 20);
+    assert!(
+        stats["resizes"].as_u64().unwrap() >= 1,
+        "the window's size never reached on_resize: {stats}"
+    );
+    assert!(err.contains("hello from on_resize: 640x360"), "{err}");
+    assert!(
+        err.contains("goodbye after 20 frames"),
+        "on_detach ran: {err}"
+    );
+}

@@ -1,0 +1,9 @@
+//! End-to-end tests of the host with real plugins. One test binary (one link of the
+//! runtime), one module per area.
+
+mod cli;
+mod ctx_api;
+mod faults;
+mod lifecycle;
+mod loading;
+mod scenes;

@@ -1,0 +1,157 @@
+//! Scene files: round trips, errors with line and column, atomic saves.
+
+use std::path::{Path, PathBuf};
+
+use onyx_plugin_api::glam::Quat;
+use onyx_plugin_api::{Name, Transform};
+use onyx_runtime::scene::{read_scene, SceneError};
+use onyx_runtime::HeadlessHost;
+use onyx_tests::plugin_library;
+
+fn demo_scene() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("../assets/scenes/demo.ron")
+}
+
+fn entity_count(host: &HeadlessHost) -> usize {
+    host.world().iter().count()
+}
+
+#[test]
+fn the_demo_scene_loads_and_spinner_spins_its_entities() {
+    let mut host = HeadlessHost::new();
+    assert_eq!(host.load_scene(&demo_scene()).unwrap(), 4);
+    host.load_plugin_file(&plugin_library("spinner")).unwrap();
+    host.step(60);
+    assert_eq!(
+        entity_count(&host),
+        4,
+        "spinner spawned none: the scene had spinners"
+    );
+    let (_, fast) = host.find::<Transform>("fast").unwrap();
+    let expected = Quat::from_rotation_y(3.0 * 1.0);
+    assert!(
+        fast.rotation.angle_between(expected) < 1e-3,
+        "{:?}",
+        fast.rotation
+    );
+    assert_eq!(
+        fast.scale.x, 0.5,
+        "fields left out of a transform take their defaults, the rest are kept"
+    );
+}
+
+#[test]
+fn a_saved_scene_loads_back_identical() {
+    let dir = tempfile::tempdir().unwrap();
+    let mut first = HeadlessHost::new();
+    first.load_scene(&demo_scene()).unwrap();
+    first.load_plugin_file(&plugin_library("hello")).unwrap();
+    first.step(5);
+    let path = dir.path().join("saved.ron");
+    first.host().save_scene(&path).unwrap();
+
+    let mut second = HeadlessHost::new();
+    second.load_scene(&path).unwrap();
+    let strip = |mut dump: serde_json::Value| {
+        for e in dump["entities"].as_array_mut().unwrap() {
+            e.as_object_mut().unwrap().remove("id");
+        }
+        dump["entities"].clone()
+    };
+    assert_eq!(strip(first.dump_state()), strip(second.dump_state()));
+    let text = std::fs::read_to_string(&path).unwrap();
+    assert!(
+        text.contains("\"hello.stats\": Json("),
+        "serde components stay readable:\n{text}"
+    );
+    assert!(
+        text.contains("Raw(\"aGVsbG8=\")"),
+        "raw components are base64:\n{text}"
+    );
+}
+
+fn write(dir: &Path, name: &str, text: &str) -> PathBuf {
+    let path = dir.join(name);
+    std::fs::write(&path, text).unwrap();
+    path
+}
+
+#[test]
+fn a_malformed_scene_reports_line_and_column_and_changes_nothing() {
+    let dir = tempfile::tempdir().unwrap();
+    let text = "(\n    version: 1,\n    entities: [\n        (name: Some(\"ok\")),\n        (name: Some(\"broken\"), transform: Some((translation: (1.0, oops, 0.0)))),\n    ],\n)\n";
+    let path = write(dir.path(), "bad.ron", text);
+    let mut host = HeadlessHost::new();
+    host.load_scene(&demo_scene()).unwrap();
+    let error = host.load_scene(&path).unwrap_err();
+    let SceneError::Parse { line, column, .. } = &error else {
+        panic!("{error:?}")
+    };
+    assert_eq!(*line, 5, "{error}");
+    assert!(*column > 40, "{error}");
+    assert!(
+        error.to_string().contains("bad.ron") && error.to_string().contains("line 5"),
+        "{error}"
+    );
+    assert_eq!(entity_count(&host), 4, "a failed load added entities");
+    assert_eq!(
+        std::fs::read_to_string(&path).unwrap(),
+        text,
+        "the file was touched"
+    );
+}
+
+#[test]
+fn scene_values_are_checked_before_anything_is_spawned() {
+    let dir = tempfile::tempdir().unwrap();
+    let cases = [
+        ("version.ron", "(version: 99, entities: [])", "format version 99"),
+        ("nan.ron", "(version: 1, entities: [(name: Some(\"a\")), (transform: Some((translation: (NaN, 0.0, 0.0))))])", "entity #1: its transform holds NaN"),
+        ("base64.ron", "(version: 1, entities: [(components: {\"x\": Raw(\"***\")})])", "not valid base64"),
+        ("unknown.ron", "(version: 1, entities: [(nmae: Some(\"typo\"))])", "nmae"),
+        ("empty.ron", "", "line 1"),
+    ];
+    for (file, text, expected) in cases {
+        let path = write(dir.path(), file, text);
+        let mut host = HeadlessHost::new();
+        let error = host.load_scene(&path).unwrap_err();
+        assert!(error.to_string().contains(expected), "{file}: {error}");
+        assert_eq!(entity_count(&host), 0, "{file}: partial load");
+    }
+    let missing = HeadlessHost::new()
+        .load_scene(&dir.path().join("absent.ron"))
+        .unwrap_err();
+    assert!(matches!(missing, SceneError::Io { .. }) && missing.to_string().contains("absent.ron"));
+}
+
+#[test]
+fn saving_replaces_the_file_atomically() {
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("scene.ron");
+    let mut host = HeadlessHost::new();
+    host.load_scene(&demo_scene()).unwrap();
+    host.host().save_scene(&path).unwrap();
+    let before = std::fs::read_to_string(&path).unwrap();
+
+    // A save that cannot complete leaves the old file as it was.
+    let bad = dir.path().join("no_such_dir").join("scene.ron");
+    assert!(host.host().save_scene(&bad).is_err());
+    assert!(!bad.exists());
+
+    // A successful save writes a new file and renames it over the old one: the old inode is
+    // never truncated, so a reader (or a crash) sees either the old or the new scene.
+    #[cfg(unix)]
+    let inode_before = std::os::unix::fs::MetadataExt::ino(&std::fs::metadata(&path).unwrap());
+    host.host_mut().world_mut().spawn((Name::new("added"),));
+    host.host().save_scene(&path).unwrap();
+    #[cfg(unix)]
+    {
+        let inode_after = std::os::unix::fs::MetadataExt::ino(&std::fs::metadata(&path).unwrap());
+        assert_ne!(inode_before, inode_after, "the file was rewritten in place");
+    }
+    let after = read_scene(&path).unwrap();
+    assert_eq!(after.entities.len(), 5);
+    assert_ne!(before, std::fs::read_to_string(&path).unwrap());
+    let leftovers: Vec<_> = std::fs::read_dir(dir.path()).unwrap().collect();
+    assert_eq!(leftovers.len(), 1, "temporary files left behind");
+}
