@@ -2,7 +2,7 @@
 
 use abi_stable::std_types::{RResult, RVec};
 
-use crate::__ffi::{BlobFfi, BuiltinFfi, BuiltinId, HostRef};
+use crate::__ffi::{BlobFfi, BuiltinFfi, BuiltinId, HostRef, PluginOpFfi};
 use crate::component::component_type::{decode, BundleParts};
 use crate::{
     BlobFormat, Bundle, Component, ComponentType, CtxError, Entity, EntityTransform, InputState,
@@ -190,6 +190,33 @@ impl<'a> Ctx<'a> {
     /// Sends a custom event with a raw payload.
     pub fn send_raw(&mut self, name: &str, payload: &[u8]) {
         self.host.send(name.into(), payload.into())
+    }
+
+    // ----- plugins -----
+
+    /// Asks the host to reload plugin `name` from its file after this frame (hot reload:
+    /// state carried over, entities untouched; a faulted plugin is revived).
+    pub fn reload_plugin(&mut self, name: &str) {
+        self.host
+            .request_plugin_op(PluginOpFfi::Reload, name.into())
+    }
+
+    /// Asks the host to reload every plugin loaded from a file, after this frame.
+    pub fn reload_all_plugins(&mut self) {
+        self.host
+            .request_plugin_op(PluginOpFfi::ReloadAll, "".into())
+    }
+
+    /// Asks the host to load a plugin (a library path or a NAME) after this frame. Success
+    /// or failure arrives as a platform event.
+    pub fn load_plugin(&mut self, spec: &str) {
+        self.host.request_plugin_op(PluginOpFfi::Load, spec.into())
+    }
+
+    /// Asks the host to detach and remove plugin `name` after this frame.
+    pub fn unload_plugin(&mut self, name: &str) {
+        self.host
+            .request_plugin_op(PluginOpFfi::Unload, name.into())
     }
 
     // ----- logging -----

@@ -13,12 +13,13 @@
 /// onyx_plugin_api::export_plugin!(MyPlugin); // built with Default
 /// ```
 ///
-/// or, to build it with an expression:
+/// or, to build it with an expression, and/or to name it explicitly (the name identifies the
+/// plugin across hot reloads, in `--set`, in fault reports; by default it is the crate's name):
 ///
 /// ```
 /// # struct MyPlugin { speed: f32 }
 /// # impl onyx_plugin_api::Plugin for MyPlugin {}
-/// onyx_plugin_api::export_plugin!(MyPlugin, MyPlugin { speed: 2.0 });
+/// onyx_plugin_api::export_plugin!(MyPlugin, MyPlugin { speed: 2.0 }, name = "my_plugin");
 /// ```
 ///
 /// The crate must be built as a `cdylib` (add `"rlib"` too, to test it in-process). The
@@ -37,18 +38,28 @@ macro_rules! export_plugin {
     ($plugin:ty) => {
         $crate::export_plugin!($plugin, <$plugin as ::core::default::Default>::default());
     };
+    ($plugin:ty, name = $name:literal) => {
+        $crate::export_plugin!(
+            $plugin,
+            <$plugin as ::core::default::Default>::default(),
+            name = $name
+        );
+    };
     ($plugin:ty, $make:expr) => {
+        $crate::export_plugin!($plugin, $make, name = ::core::env!("CARGO_CRATE_NAME"));
+    };
+    ($plugin:ty, $make:expr, name = $name:expr) => {
         #[doc(hidden)]
         #[unsafe(export_name = "_1as_0lib_1header_0root_bmodule_bloader")]
         pub static __ONYX_PLUGIN_ROOT_MODULE: $crate::__ffi::LibHeader = {
             extern "C" fn onyx_new_plugin(
             ) -> $crate::__ffi::RResult<$crate::__ffi::PluginBox, $crate::__ffi::CallFailure> {
-                $crate::__ffi::new_plugin_box::<$plugin>(::core::env!("CARGO_CRATE_NAME"), || $make)
+                $crate::__ffi::new_plugin_box::<$plugin>($name, || $make)
             }
             fn onyx_root_module() -> $crate::__ffi::PluginModuleRef {
                 use $crate::__ffi::PrefixTypeTrait;
                 $crate::__ffi::PluginModule {
-                    plugin_name: $crate::__ffi::RStr::from_str(::core::env!("CARGO_CRATE_NAME")),
+                    plugin_name: $crate::__ffi::RStr::from_str($name),
                     plugin_version: $crate::__ffi::RStr::from_str(::core::env!(
                         "CARGO_PKG_VERSION"
                     )),

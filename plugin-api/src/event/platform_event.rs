@@ -18,6 +18,18 @@ pub enum PlatformEvent {
         /// The panic or error message.
         message: String,
     },
+    /// A new build of a plugin replaced the running one (hot reload); its state carried over.
+    PluginReloaded {
+        /// The plugin's name.
+        plugin: String,
+    },
+    /// A new build of a plugin could not replace the running one, which keeps running.
+    PluginReloadFailed {
+        /// The plugin's name.
+        plugin: String,
+        /// Why, as a sentence.
+        message: String,
+    },
     /// A plugin was detached and removed.
     PluginUnloaded {
         /// The plugin's name.

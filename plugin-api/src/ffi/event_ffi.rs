@@ -46,6 +46,13 @@ pub enum EventFfi<'a> {
         stage: RStr<'a>,
         message: RStr<'a>,
     },
+    PluginReloaded {
+        plugin: RStr<'a>,
+    },
+    PluginReloadFailed {
+        plugin: RStr<'a>,
+        message: RStr<'a>,
+    },
     PluginUnloaded {
         plugin: RStr<'a>,
     },
@@ -101,6 +108,15 @@ impl<'a> From<&'a Event> for EventFfi<'a> {
                 stage: stage.as_str().into(),
                 message: message.as_str().into(),
             },
+            Event::Platform(PlatformEvent::PluginReloaded { plugin }) => EventFfi::PluginReloaded {
+                plugin: plugin.as_str().into(),
+            },
+            Event::Platform(PlatformEvent::PluginReloadFailed { plugin, message }) => {
+                EventFfi::PluginReloadFailed {
+                    plugin: plugin.as_str().into(),
+                    message: message.as_str().into(),
+                }
+            }
             Event::Platform(PlatformEvent::PluginUnloaded { plugin }) => EventFfi::PluginUnloaded {
                 plugin: plugin.as_str().into(),
             },
@@ -154,6 +170,14 @@ impl From<EventFfi<'_>> for Event {
             } => PlatformEvent::PluginFaulted {
                 plugin: s(plugin),
                 stage: s(stage),
+                message: s(message),
+            }
+            .into(),
+            EventFfi::PluginReloaded { plugin } => {
+                PlatformEvent::PluginReloaded { plugin: s(plugin) }.into()
+            }
+            EventFfi::PluginReloadFailed { plugin, message } => PlatformEvent::PluginReloadFailed {
+                plugin: s(plugin),
                 message: s(message),
             }
             .into(),
@@ -212,6 +236,12 @@ mod tests {
                 plugin: "a".into(),
                 stage: "on_update".into(),
                 message: "boom".into(),
+            }
+            .into(),
+            PlatformEvent::PluginReloaded { plugin: "b".into() }.into(),
+            PlatformEvent::PluginReloadFailed {
+                plugin: "b".into(),
+                message: "m".into(),
             }
             .into(),
             PlatformEvent::PluginUnloaded { plugin: "b".into() }.into(),

@@ -14,7 +14,7 @@ use abi_stable::{
 };
 
 use super::{BlobFfi, BuiltinFfi, BuiltinId, CtxErrorFfi, EntityBlobFfi};
-use crate::host::HostServices;
+use crate::host::{HostServices, PluginRequest};
 use crate::{CtxError, Entity, EntityTransform, InputState, LogLevel, Time};
 
 #[sabi_trait]
@@ -46,6 +46,21 @@ pub trait HostObject {
     fn commit_transforms(&mut self) -> RResult<(), CtxErrorFfi>;
     fn set_transforms(&mut self, items: RSlice<'_, EntityTransform>) -> RResult<(), CtxErrorFfi>;
     fn send(&mut self, name: RStr<'_>, payload: RSlice<'_, u8>);
+    fn request_plugin_op(&mut self, op: PluginOpFfi, argument: RStr<'_>);
+}
+
+/// What a plugin asks the host to do with plugins (after the frame).
+#[repr(u8)]
+#[derive(abi_stable::StableAbi, Clone, Copy, Debug, PartialEq, Eq)]
+pub enum PluginOpFfi {
+    /// Reload the plugin named by the argument.
+    Reload,
+    /// Reload every plugin loaded from a file.
+    ReloadAll,
+    /// Load the plugin given by the argument (a path or a NAME).
+    Load,
+    /// Unload the plugin named by the argument.
+    Unload,
 }
 
 /// The host object handed to each plugin call, borrowed for that call only.
@@ -201,6 +216,16 @@ impl<H: HostServices + ?Sized> HostObject for HostBridge<'_, H> {
             || (),
             || self.0.send(name.as_str(), payload.as_slice()),
         )
+    }
+
+    fn request_plugin_op(&mut self, op: PluginOpFfi, argument: RStr<'_>) {
+        let request = match op {
+            PluginOpFfi::Reload => PluginRequest::Reload(argument.as_str().to_owned()),
+            PluginOpFfi::ReloadAll => PluginRequest::ReloadAll,
+            PluginOpFfi::Load => PluginRequest::Load(argument.as_str().to_owned()),
+            PluginOpFfi::Unload => PluginRequest::Unload(argument.as_str().to_owned()),
+        };
+        guard("request_plugin", || (), || self.0.request_plugin(request))
     }
 }
 

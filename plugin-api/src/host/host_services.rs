@@ -58,4 +58,19 @@ pub trait HostServices {
     fn set_transforms(&mut self, items: &[EntityTransform]) -> Result<(), CtxError>;
     /// Queues a custom event for every plugin, delivered next frame.
     fn send(&mut self, name: &str, payload: &[u8]);
+    /// Queues a change to the set of plugins, carried out after the frame.
+    fn request_plugin(&mut self, request: PluginRequest);
+}
+
+/// A change to the set of plugins that a plugin asked for (the editor's Plugins menu).
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum PluginRequest {
+    /// Reload this plugin from its file.
+    Reload(String),
+    /// Reload every plugin loaded from a file.
+    ReloadAll,
+    /// Load a plugin by path or NAME.
+    Load(String),
+    /// Detach and remove this plugin.
+    Unload(String),
 }

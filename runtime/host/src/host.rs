@@ -32,12 +32,13 @@ pub struct FrameReport {
 /// `on_update` → `on_render` → `draw_gui`. Plugins are called in load order; `on_detach` runs
 /// in reverse load order at [`Host::shutdown`].
 pub struct Host {
-    state: HostState,
-    plugins: Vec<PluginSlot>,
+    pub(crate) state: HostState,
+    pub(crate) plugins: Vec<PluginSlot>,
     plugin_settings: Vec<(String, String, String)>,
     search_path: PluginSearchPath,
     initialized: bool,
     shut_down: bool,
+    pub(crate) watcher: Option<crate::plugins::LibraryWatcher>,
 }
 
 impl Host {
@@ -50,6 +51,7 @@ impl Host {
             search_path: config.search_path,
             initialized: false,
             shut_down: false,
+            watcher: None,
         }
     }
 
@@ -88,7 +90,9 @@ impl Host {
             path: path.to_path_buf(),
             loaded_from,
         };
-        self.attach(name.clone(), origin, instance)?;
+        let hash = crate::plugins::library_watcher::content_hash(path).ok();
+        self.attach(name.clone(), origin, instance, hash)?;
+        self.watch_new_plugin(path, hash);
         Ok(name)
     }
 
@@ -110,7 +114,7 @@ impl Host {
                 message: e.to_string(),
             })
         })?;
-        self.attach(name.to_owned(), PluginOrigin::InProcess, instance)
+        self.attach(name.to_owned(), PluginOrigin::InProcess, instance, None)
     }
 
     fn attach(
@@ -118,6 +122,7 @@ impl Host {
         name: String,
         origin: PluginOrigin,
         instance: PluginInstance,
+        content_hash: Option<u64>,
     ) -> Result<(), PluginLoadError> {
         let settings: Vec<(String, String)> = self
             .plugin_settings
@@ -131,6 +136,8 @@ impl Host {
             instance,
             status: PluginStatus::Running,
             settings,
+            content_hash,
+            reloads: 0,
         };
         let info = AttachInfo {
             reload: false,
@@ -177,6 +184,11 @@ impl Host {
         };
         let mut slot = self.plugins.remove(index);
         slot.call(&mut self.state, Stage::Detach, |p, cx| p.on_detach(cx));
+        if let (Some(watcher), PluginOrigin::Library { path, .. }) =
+            (&mut self.watcher, &slot.origin)
+        {
+            watcher.unwatch(path);
+        }
         self.state
             .pending_events
             .push(Event::Platform(PlatformEvent::PluginUnloaded {
@@ -217,6 +229,7 @@ impl Host {
     /// Runs one frame that took `real_dt` seconds of real time.
     pub fn frame(&mut self, real_dt: f64) -> FrameReport {
         self.init();
+        self.poll_hot_reload();
         self.dispatch_events();
         let steps = self.state.clock.begin_frame(real_dt);
         for _ in 0..steps {
@@ -243,6 +256,7 @@ impl Host {
         }
         self.state.input.end_frame();
         self.state.clock.end_frame();
+        self.apply_plugin_requests();
         FrameReport {
             fixed_steps: steps,
             quit: self.state.quit_requested,

@@ -23,10 +23,13 @@
 //! - `state_dump.rs`: the `--dump-state` JSON.
 //! - `window/`: the winit window and input mapping.
 
+#![warn(missing_docs)]
+
 pub mod clock;
 mod headless_host;
 mod host;
 mod host_config;
+mod host_reload;
 pub mod plugins;
 pub mod scene;
 pub mod state_dump;
@@ -36,5 +39,5 @@ pub mod world;
 pub use headless_host::HeadlessHost;
 pub use host::{FrameReport, Host};
 pub use host_config::HostConfig;
-pub use plugins::{PluginLoadError, PluginStatus};
+pub use plugins::{PluginLoadError, PluginStatus, ReloadError};
 pub use scene::SceneError;

@@ -6,4 +6,5 @@ mod ctx_api;
 mod faults;
 mod lifecycle;
 mod loading;
+mod reload;
 mod scenes;

@@ -44,6 +44,19 @@ pub enum PluginLoadError {
         /// The dynamic loader's message.
         reason: String,
     },
+    /// The file is shorter than its own headers say: a build still being written, or cut off.
+    #[error(
+        "`{}` is incomplete ({actual} of {needed} bytes): it is still being written or was cut          off; rebuild it",
+        .path.display()
+    )]
+    Truncated {
+        /// The file.
+        path: PathBuf,
+        /// Bytes its headers require.
+        needed: u64,
+        /// Bytes it has.
+        actual: u64,
+    },
     /// A shared library without the Onyx root module.
     #[error(
         "`{}` is a shared library but not an Onyx plugin: it exports no plugin root module. Add \

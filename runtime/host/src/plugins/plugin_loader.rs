@@ -22,6 +22,15 @@ pub fn open_library(path: &Path) -> Result<(PluginLibrary, PathBuf), PluginLoadE
         });
     }
     let copy = fresh_copy(path)?;
+    // Check the copy (the original may still be changing).
+    if let Ok(Some((needed, actual))) = super::library_completeness::truncation(&copy) {
+        let _ = std::fs::remove_file(&copy);
+        return Err(PluginLoadError::Truncated {
+            path: path.to_path_buf(),
+            needed,
+            actual,
+        });
+    }
     let opened = PluginLibrary::open(&copy);
     if cfg!(unix) {
         let _ = std::fs::remove_file(&copy);

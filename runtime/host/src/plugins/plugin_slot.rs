@@ -29,6 +29,8 @@ pub struct PluginSlot {
     pub(crate) instance: PluginInstance,
     pub(crate) status: PluginStatus,
     pub(crate) settings: Vec<(String, String)>,
+    pub(crate) content_hash: Option<u64>,
+    pub(crate) reloads: u32,
 }
 
 impl PluginSlot {
@@ -45,6 +47,11 @@ impl PluginSlot {
     /// Running or faulted.
     pub fn status(&self) -> &PluginStatus {
         &self.status
+    }
+
+    /// How many times a new build replaced this plugin.
+    pub fn reloads(&self) -> u32 {
+        self.reloads
     }
 
     /// Calls `f` on the plugin unless it has faulted; on a panic or error, marks it faulted,

@@ -7,6 +7,7 @@ use winit::application::ApplicationHandler;
 use winit::dpi::PhysicalSize;
 use winit::event::{DeviceEvent, DeviceId, WindowEvent};
 use winit::event_loop::{ActiveEventLoop, ControlFlow, EventLoop};
+use winit::keyboard::{KeyCode, PhysicalKey};
 use winit::window::{Window, WindowId};
 
 use super::winit_input::{key_event, map_button, scroll_event};
@@ -57,7 +58,7 @@ struct App<'h> {
 }
 
 /// Opens a window and runs `host` in it until a plugin quits, the window is closed, or
-/// `options.frames` frames have run. Must be called on the main thread, once per process
+/// `options.frames` frames have run. F5 reloads every plugin loaded from a file. Must be called on the main thread, once per process
 /// (winit allows one event loop).
 pub fn run_windowed(
     host: &mut Host,
@@ -153,6 +154,13 @@ impl ApplicationHandler for App<'_> {
                 self.host.push_event(OnyxWindowEvent::Focused(focused))
             }
             WindowEvent::KeyboardInput { event, .. } => {
+                if event.physical_key == PhysicalKey::Code(KeyCode::F5)
+                    && event.state.is_pressed()
+                    && !event.repeat
+                {
+                    tracing::info!("F5: reloading every plugin loaded from a file");
+                    self.host.reload_all();
+                }
                 self.host
                     .push_event(key_event(event.physical_key, event.state, event.repeat));
                 if event.state.is_pressed() {

@@ -1,6 +1,6 @@
 //! [`CallContext`]: serves one plugin call — the host's implementation of `HostServices`.
 
-use onyx_plugin_api::host::{Blob, BuiltinId, BuiltinValue, HostServices};
+use onyx_plugin_api::host::{Blob, BuiltinId, BuiltinValue, HostServices, PluginRequest};
 use onyx_plugin_api::{
     CtxError, CustomEvent, Entity, EntityTransform, Event, InputState, LogLevel, Name, Time,
     Transform,
@@ -22,6 +22,8 @@ pub struct HostState {
     pub pending_events: Vec<Event>,
     /// Set when a plugin or the window asked to quit.
     pub quit_requested: bool,
+    /// Plugin changes asked for during the frame, carried out after it.
+    pub plugin_requests: Vec<PluginRequest>,
     entity_buffer: Vec<Entity>,
     transform_buffer: Vec<EntityTransform>,
 }
@@ -35,6 +37,7 @@ impl HostState {
             input: InputState::default(),
             pending_events: Vec::new(),
             quit_requested: false,
+            plugin_requests: Vec::new(),
             entity_buffer: Vec::new(),
             transform_buffer: Vec::new(),
         }
@@ -350,5 +353,10 @@ impl HostServices for CallContext<'_> {
             sender: self.plugin.to_owned(),
             payload: payload.to_vec(),
         }));
+    }
+
+    fn request_plugin(&mut self, request: PluginRequest) {
+        tracing::debug!(plugin = self.plugin, ?request, "plugin change requested");
+        self.state.plugin_requests.push(request);
     }
 }
