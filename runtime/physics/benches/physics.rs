@@ -1,0 +1,131 @@
+//! Benchmarks: ms/step for 1,000 / 10,000 bodies settled on a ground (asleep and awake),
+//! the 20-row pyramid, and GJK query time. Run: `cargo bench -p onyx-physics`.
+
+use std::hint::black_box;
+use std::time::{Duration, Instant};
+
+use criterion::{criterion_group, criterion_main, Criterion};
+use onyx_physics::glam::{Quat, Vec3};
+use onyx_physics::narrowphase::gjk_distance;
+use onyx_physics::shape::ConvexCore;
+use onyx_physics::{ColliderDesc, PhysicsSettings, PhysicsWorld, Pose, RigidBodyDesc};
+
+/// `n` bodies (alternating boxes and spheres) on a grid above a ground plane, stepped
+/// until they rest.
+fn settled_world(n: usize, sleep: bool) -> PhysicsWorld {
+    let s = PhysicsSettings {
+        sleep_enabled: sleep,
+        ..Default::default()
+    };
+    let mut w = PhysicsWorld::new(s);
+    let g = w.insert_body(RigidBodyDesc::fixed());
+    w.insert_collider(ColliderDesc::half_space(Vec3::Y), g);
+    let side = (n as f32).sqrt().ceil() as usize;
+    for i in 0..n {
+        let (x, z) = ((i % side) as f32 * 1.5, (i / side) as f32 * 1.5);
+        let b = w.insert_body(RigidBodyDesc::dynamic().translation(Vec3::new(
+            x,
+            0.6 + (i % 3) as f32 * 0.3,
+            z,
+        )));
+        let c = if i % 2 == 0 {
+            ColliderDesc::cuboid(0.5, 0.5, 0.5)
+        } else {
+            ColliderDesc::sphere(0.5)
+        };
+        w.insert_collider(c, b);
+    }
+    for _ in 0..120 {
+        w.step();
+    }
+    w
+}
+
+fn pyramid(rows: usize) -> PhysicsWorld {
+    let s = PhysicsSettings {
+        sleep_enabled: false,
+        ..Default::default()
+    };
+    let mut w = PhysicsWorld::new(s);
+    let g = w.insert_body(RigidBodyDesc::fixed());
+    w.insert_collider(ColliderDesc::half_space(Vec3::Y), g);
+    for row in 0..rows {
+        let n = rows - row;
+        for i in 0..n {
+            let x = (i as f32 - (n - 1) as f32 * 0.5) * 1.02;
+            let b = w.insert_body(RigidBodyDesc::dynamic().translation(Vec3::new(
+                x,
+                0.5 + row as f32,
+                0.0,
+            )));
+            w.insert_collider(ColliderDesc::cuboid(0.5, 0.5, 0.5), b);
+        }
+    }
+    for _ in 0..60 {
+        w.step();
+    }
+    w
+}
+
+/// Prints the mean ms/step and the stage breakdown of the last step.
+fn report(name: &str, w: &mut PhysicsWorld, steps: usize) {
+    let t = Instant::now();
+    for _ in 0..steps {
+        w.step();
+    }
+    let ms = t.elapsed().as_secs_f64() * 1e3 / steps as f64;
+    let c = w.last_step().counters;
+    println!(
+        "FIGURE {name}: {ms:.3} ms/step (awake {}, pairs {}, contacts {}; broad {:?} narrow {:?} solve {:?} integrate {:?} sleep {:?})",
+        c.awake_bodies, c.pairs, c.contacts, c.broadphase, c.narrowphase, c.solve, c.integrate, c.sleep
+    );
+}
+
+fn bench_steps(c: &mut Criterion) {
+    let mut group = c.benchmark_group("step");
+    group
+        .sample_size(10)
+        .warm_up_time(Duration::from_millis(500))
+        .measurement_time(Duration::from_secs(2));
+    for (n, sleep) in [(1000, true), (1000, false), (10_000, true), (10_000, false)] {
+        let name = format!("settled_{n}_{}", if sleep { "sleeping" } else { "awake" });
+        let mut w = settled_world(n, sleep);
+        report(&name, &mut w, 20);
+        group.bench_function(&name, |b| b.iter(|| black_box(w.step().counters.contacts)));
+    }
+    let mut w = pyramid(20);
+    report("pyramid_20_rows", &mut w, 20);
+    group.bench_function("pyramid_20_rows", |b| {
+        b.iter(|| black_box(w.step().counters.contacts))
+    });
+    group.finish();
+}
+
+fn bench_gjk(c: &mut Criterion) {
+    let a = ConvexCore::Cuboid(Vec3::new(0.5, 0.7, 0.9));
+    let b = ConvexCore::Cuboid(Vec3::new(0.4, 0.4, 1.2));
+    let pa = Pose::new(Vec3::ZERO, Quat::from_rotation_y(0.3));
+    let pb = Pose::new(
+        Vec3::new(2.1, 0.4, 0.2),
+        Quat::from_euler(glam_euler(), 0.2, 0.7, 0.1),
+    );
+    let t = Instant::now();
+    let iters = 100_000;
+    for _ in 0..iters {
+        black_box(gjk_distance(black_box(&a), &pa, &b, &pb));
+    }
+    println!(
+        "FIGURE gjk_box_box_distance: {:.1} ns/query",
+        t.elapsed().as_nanos() as f64 / iters as f64
+    );
+    c.bench_function("gjk_box_box_distance", |bench| {
+        bench.iter(|| black_box(gjk_distance(black_box(&a), &pa, &b, &pb)))
+    });
+}
+
+fn glam_euler() -> onyx_physics::glam::EulerRot {
+    onyx_physics::glam::EulerRot::XYZ
+}
+
+criterion_group!(benches, bench_steps, bench_gjk);
+criterion_main!(benches);

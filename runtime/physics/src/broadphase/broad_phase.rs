@@ -1,0 +1,96 @@
+//! [`BroadPhase`]: finds new candidate pairs by querying moved proxies against a dynamic tree.
+
+use glam::Vec3;
+
+use crate::aabb::Aabb;
+
+use super::dynamic_tree::DynamicTree;
+
+/// Proxy tree plus the list of proxies that left their fat box since the last pair search.
+///
+/// Only moved proxies are queried, so resting or sleeping bodies cost nothing; each query is
+/// O(log n), giving O(m log n) per step for m movers (O(n log n) worst case).
+#[derive(Clone, Debug, Default)]
+pub struct BroadPhase {
+    pub(crate) tree: DynamicTree,
+    moved: Vec<u32>,
+    moved_flag: Vec<bool>,
+}
+
+impl BroadPhase {
+    /// Adds a proxy for a tight box; returns its id.
+    pub fn create_proxy(&mut self, tight: Aabb, margin: f32, data: u32) -> u32 {
+        let p = self.tree.insert(tight.expanded(margin), data);
+        self.mark_moved(p);
+        p
+    }
+
+    /// Removes a proxy.
+    pub fn destroy_proxy(&mut self, proxy: u32) {
+        if let Some(f) = self.moved_flag.get_mut(proxy as usize) {
+            if *f {
+                *f = false;
+                self.moved.retain(|&m| m != proxy);
+            }
+        }
+        self.tree.remove(proxy);
+    }
+
+    /// Updates a proxy's tight box; re-inserts (and schedules a pair search) only when it
+    /// left its fat box.
+    pub fn update_proxy(&mut self, proxy: u32, tight: Aabb, margin: f32, displacement: Vec3) {
+        if self.tree.move_proxy(proxy, tight, margin, displacement) {
+            self.mark_moved(proxy);
+        }
+    }
+
+    fn mark_moved(&mut self, proxy: u32) {
+        let i = proxy as usize;
+        if self.moved_flag.len() <= i {
+            self.moved_flag.resize(i + 1, false);
+        }
+        if !self.moved_flag[i] {
+            self.moved_flag[i] = true;
+            self.moved.push(proxy);
+        }
+    }
+
+    /// Number of proxies waiting for a pair search.
+    #[must_use]
+    pub fn moved_count(&self) -> usize {
+        self.moved.len()
+    }
+
+    /// Appends `(data_a, data_b)` for every pair of overlapping fat boxes where at least one
+    /// proxy moved. Pairs may repeat ones that already exist; the caller deduplicates.
+    pub fn find_pairs(&mut self, out: &mut Vec<(u32, u32)>) {
+        for &p in &self.moved {
+            let fat = self.tree.fat_aabb(p);
+            let my = self.tree.data(p);
+            let flags = &self.moved_flag;
+            self.tree.query(&fat, |other, data| {
+                // Both moved: only the lower proxy id reports the pair.
+                if other != p && !(flags[other as usize] && other < p) {
+                    out.push((my, data));
+                }
+                true
+            });
+        }
+        for &p in &self.moved {
+            self.moved_flag[p as usize] = false;
+        }
+        self.moved.clear();
+    }
+
+    /// Fat box of a proxy.
+    #[must_use]
+    pub fn fat_aabb(&self, proxy: u32) -> Aabb {
+        self.tree.fat_aabb(proxy)
+    }
+
+    /// The underlying tree.
+    #[must_use]
+    pub fn tree(&self) -> &DynamicTree {
+        &self.tree
+    }
+}

@@ -1,0 +1,160 @@
+//! Box–box contact: separating-axis test over 15 axes, then face clipping or edge–edge points.
+
+use glam::{Mat3, Vec3};
+
+use super::polygon_clip::clip_features;
+use super::raw_manifold::RawManifold;
+use crate::pose::Pose;
+use crate::shape::ConvexCore;
+
+/// A face axis is kept unless an edge–edge axis separates more by this much, metres.
+/// Prevents flip-flopping between face and edge manifolds of resting boxes. Bounded `[0, 0.01]`.
+pub const BOX_EDGE_BIAS: f32 = 0.001;
+
+/// Face of B replaces face of A as reference only when it separates more by this, metres.
+pub const BOX_FACE_BIAS: f32 = 0.0005;
+
+/// Edge pairs whose cross product is shorter than this are parallel and skipped.
+pub const BOX_PARALLEL_EPSILON: f32 = 1e-5;
+
+/// Box A (half extents `ha` at `pa`) against box B (`hb` at `pb`).
+#[must_use]
+pub(crate) fn box_box(
+    ha: Vec3,
+    pa: &Pose,
+    hb: Vec3,
+    pb: &Pose,
+    margin: f32,
+    scratch: &mut (Vec<Vec3>, Vec<Vec3>),
+) -> Option<RawManifold> {
+    let rel = pa.inv_mul(pb);
+    let r = Mat3::from_quat(rel.rotation);
+    let t = rel.translation;
+    let bx = [r.x_axis, r.y_axis, r.z_axis];
+    let absr = [bx[0].abs(), bx[1].abs(), bx[2].abs()];
+    // Face axes of A.
+    let mut best_a = (f32::MIN, 0usize);
+    for i in 0..3 {
+        let rb = hb.x * absr[0][i] + hb.y * absr[1][i] + hb.z * absr[2][i];
+        let sep = t[i].abs() - ha[i] - rb;
+        if sep > margin {
+            return None;
+        }
+        if sep > best_a.0 {
+            best_a = (sep, i);
+        }
+    }
+    let mut best_b = (f32::MIN, 0usize);
+    for j in 0..3 {
+        let ra = ha.dot(absr[j]);
+        let sep = t.dot(bx[j]).abs() - ra - hb[j];
+        if sep > margin {
+            return None;
+        }
+        if sep > best_b.0 {
+            best_b = (sep, j);
+        }
+    }
+    let mut best_e = (f32::MIN, 0usize, 0usize, Vec3::ZERO);
+    for i in 0..3 {
+        for j in 0..3 {
+            let mut e = Vec3::ZERO;
+            e[i] = 1.0;
+            let axis = e.cross(bx[j]);
+            let len = axis.length();
+            if len < BOX_PARALLEL_EPSILON {
+                continue;
+            }
+            let axis = axis / len;
+            let ra = ha.dot(axis.abs());
+            let rb = hb.x * bx[0].dot(axis).abs()
+                + hb.y * bx[1].dot(axis).abs()
+                + hb.z * bx[2].dot(axis).abs();
+            let sep = t.dot(axis).abs() - ra - rb;
+            if sep > margin {
+                return None;
+            }
+            if sep > best_e.0 {
+                let oriented = if t.dot(axis) >= 0.0 { axis } else { -axis };
+                best_e = (sep, i, j, oriented);
+            }
+        }
+    }
+    let face_sep = best_a.0.max(best_b.0);
+    let to_frame = |m: &mut RawManifold| {
+        m.normal = pa.rotation * m.normal;
+        for p in &mut m.points {
+            p.point = pa.transform_point(p.point);
+        }
+    };
+    if best_e.0 > face_sep + BOX_EDGE_BIAS {
+        let (_, i, j, n) = best_e;
+        // Supporting edges.
+        let ca = ConvexCore::Cuboid(ha).support(n);
+        let mut ea = Vec3::ZERO;
+        ea[i] = 1.0;
+        let cb_local = ConvexCore::Cuboid(hb).support(rel.inverse_transform_vector(-n));
+        // Edge segments centred at the support corners' projections.
+        let a0 = Vec3::from_array({
+            let mut v = ca.to_array();
+            v[i] = -ha[i];
+            v
+        });
+        let a1 = Vec3::from_array({
+            let mut v = ca.to_array();
+            v[i] = ha[i];
+            v
+        });
+        let mut b_lo = cb_local;
+        b_lo[j] = -hb[j];
+        let mut b_hi = cb_local;
+        b_hi[j] = hb[j];
+        let (b0, b1) = (rel.transform_point(b_lo), rel.transform_point(b_hi));
+        let (p, q) = super::capsule_contacts::closest_segment_segment(a0, a1, b0, b1);
+        let sep = n.dot(q - p);
+        if sep > margin {
+            return None;
+        }
+        let mut m = RawManifold::single(n, (p + q) * 0.5, sep, 0x8000 | (i as u32) << 2 | j as u32);
+        to_frame(&mut m);
+        return Some(m);
+    }
+    let (ref_is_a, axis) = if best_b.0 > best_a.0 + BOX_FACE_BIAS {
+        (false, best_b.1)
+    } else {
+        (true, best_a.1)
+    };
+    let (refp, incp) = (&mut scratch.0, &mut scratch.1);
+    let (ref_normal, mut m) = if ref_is_a {
+        let mut n = Vec3::ZERO;
+        n[axis] = if t[axis] >= 0.0 { 1.0 } else { -1.0 };
+        ConvexCore::Cuboid(ha).support_feature(n, refp);
+        ConvexCore::Cuboid(hb).support_feature(rel.inverse_transform_vector(-n), incp);
+        for p in incp.iter_mut() {
+            *p = rel.transform_point(*p);
+        }
+        (n, RawManifold::new(n))
+    } else {
+        // Outward normal of B's reference face points toward A.
+        let nb_local = {
+            let mut n = Vec3::ZERO;
+            n[axis] = if t.dot(bx[axis]) >= 0.0 { -1.0 } else { 1.0 };
+            n
+        };
+        ConvexCore::Cuboid(hb).support_feature(nb_local, refp);
+        for p in refp.iter_mut() {
+            *p = rel.transform_point(*p);
+        }
+        let nb = rel.rotation * nb_local;
+        ConvexCore::Cuboid(ha).support_feature(-nb, incp);
+        (nb, RawManifold::new(-nb))
+    };
+    let id_base = if ref_is_a { 0 } else { 0x4000 } | (axis as u32) << 12;
+    clip_features(refp, ref_normal, 0.0, incp, 0.0, margin, id_base, &mut m);
+    if m.points.is_empty() {
+        return None;
+    }
+    m.reduce();
+    to_frame(&mut m);
+    Some(m)
+}

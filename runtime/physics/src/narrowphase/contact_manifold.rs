@@ -1,0 +1,35 @@
+//! [`ContactManifold`]: up to four contact points sharing a normal.
+
+use glam::Vec3;
+
+use super::contact_point::ContactPoint;
+
+/// Contact points of one feature pair with a shared normal (from A to B).
+#[derive(Clone, Debug, PartialEq, Default)]
+pub struct ContactManifold {
+    /// Unit normal from collider A to collider B, world axes.
+    pub normal: Vec3,
+    /// Normal in body A's frame.
+    pub local_normal: Vec3,
+    /// Points (at most 4).
+    pub points: Vec<ContactPoint>,
+    /// First friction direction (world), fixed for the step.
+    pub(crate) tangent1: Vec3,
+}
+
+impl ContactManifold {
+    /// Smallest separation among the points (metres), `f32::MAX` if none.
+    #[must_use]
+    pub fn min_separation(&self) -> f32 {
+        self.points
+            .iter()
+            .map(|p| p.separation)
+            .fold(f32::MAX, f32::min)
+    }
+
+    /// Sum of the points' accumulated normal impulses of the last step, N·s.
+    #[must_use]
+    pub fn total_normal_impulse(&self) -> f32 {
+        self.points.iter().map(|p| p.normal_impulse).sum()
+    }
+}

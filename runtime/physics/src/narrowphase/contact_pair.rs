@@ -1,0 +1,44 @@
+//! [`ContactPair`]: persistent contact state of two colliders.
+
+use crate::body_handle::BodyHandle;
+use crate::collider_handle::ColliderHandle;
+
+use super::contact_manifold::ContactManifold;
+
+/// Two colliders whose enlarged bounds overlap, with their manifolds (usually one; one per
+/// triangle against meshes).
+#[derive(Clone, Debug, PartialEq)]
+pub struct ContactPair {
+    /// First collider (normals point away from it).
+    pub collider_a: ColliderHandle,
+    /// Second collider.
+    pub collider_b: ColliderHandle,
+    /// Body of `collider_a`.
+    pub body_a: BodyHandle,
+    /// Body of `collider_b`.
+    pub body_b: BodyHandle,
+    /// Manifolds, including speculative points (positive separation).
+    pub manifolds: Vec<ContactManifold>,
+    /// True while the pair is in contact: set when a point overlaps (separation `<= 0`) or
+    /// carried a normal impulse during the step; cleared when no point carries impulse and
+    /// all separations exceed the linear slop.
+    pub touching: bool,
+    /// Combined restitution.
+    pub restitution: f32,
+    /// Combined static friction.
+    pub static_friction: f32,
+    /// Combined dynamic friction.
+    pub dynamic_friction: f32,
+    /// Smallest separation of the last update, metres.
+    pub(crate) min_separation: f32,
+    /// Manifolds were regenerated this step.
+    pub(crate) updated: bool,
+}
+
+impl ContactPair {
+    /// Total number of contact points.
+    #[must_use]
+    pub fn point_count(&self) -> usize {
+        self.manifolds.iter().map(|m| m.points.len()).sum()
+    }
+}

@@ -1,0 +1,131 @@
+//! [`PhysicsSettings`]: every tunable of the simulation, with units and costs.
+
+use glam::Vec3;
+
+/// Simulation settings. Each field states its unit, its default (the line
+/// `Default: ` is checked against [`PhysicsSettings::default`] by a test) and what
+/// too high / too low does.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct PhysicsSettings {
+    /// Step length, seconds.
+    /// Default: `1/60`
+    /// Too high: tunnelling, stiff stacks wobble, less accurate trajectories.
+    /// Too low: more CPU per simulated second.
+    pub dt: f32,
+    /// Global gravity, m/s².
+    /// Default: `(0, -9.81, 0)`
+    pub gravity: Vec3,
+    /// Substeps per step (soft step: integrate, solve, relax each substep).
+    /// Default: `4`
+    /// Too high: CPU cost grows linearly. Too low (1): stacks sink and jitter, heavy-on-light
+    /// contacts get soft.
+    pub substeps: u32,
+    /// Biased solver passes per substep.
+    /// Default: `1`
+    /// Too high: CPU cost. Too low: not applicable (minimum 1).
+    pub solver_iterations: u32,
+    /// Relax passes per substep (remove the position-correction velocity so correction adds
+    /// no energy).
+    /// Default: `1`
+    /// Too high: CPU cost. Too low (0): push-out velocity stays in bodies (popping).
+    pub relax_iterations: u32,
+    /// Contact stiffness, Hz (clamped to a quarter of the substep rate).
+    /// Default: `30`
+    /// Too high: stiff, may ring at low substep counts. Too low: squishy, visible sinking.
+    pub contact_hertz: f32,
+    /// Contact damping ratio (dimensionless).
+    /// Default: `10`
+    /// Too high: sluggish push-out. Too low: bouncy correction.
+    pub contact_damping_ratio: f32,
+    /// Fastest speed at which overlap is pushed apart, m/s.
+    /// Default: `3`
+    /// Too high: deep overlaps explode apart. Too low: deep overlaps resolve slowly.
+    pub max_contact_push_speed: f32,
+    /// Allowed resting penetration (no push-out below it), metres. Also the CCD stop
+    /// distance and the hysteresis for ending contact events.
+    /// Default: `0.001`
+    /// Too high: visible sinking (stacks lose one slop per level). Too low: push-out works
+    /// against resting contacts and contact events flicker.
+    pub linear_slop: f32,
+    /// Contacts closer than this are generated ahead of touching (speculative), metres.
+    /// Default: `0.02`
+    /// Too high: ghost collisions near edges. Too low: fast bodies overlap before contact.
+    pub speculative_distance: f32,
+    /// Cap on the extra speculative distance from relative velocity for bodies without CCD,
+    /// metres (the distance is `speculative_distance + |v_rel| · dt`, capped by this).
+    /// Default: `0.5`
+    /// Too high: costly pairs for fast bodies, ghost contacts. Too low: falling bodies
+    /// overlap the ground at impact.
+    pub max_speculative_distance: f32,
+    /// Enlargement of broadphase boxes, metres.
+    /// Default: `0.1`
+    /// Too high: many pairs that never touch. Too low: tree updates every step.
+    pub aabb_margin: f32,
+    /// Normal approach speed below which restitution is ignored, m/s.
+    /// Default: `1`
+    /// Too high: small bounces die. Too low: resting bodies never settle (micro bounces).
+    pub restitution_threshold: f32,
+    /// Tangential speed below which a contact uses static friction, m/s.
+    /// Default: `0.05`
+    /// Too high: sliding bodies stop too early. Too low: static friction rarely applies.
+    pub static_friction_speed: f32,
+    /// Speed limit, m/s.
+    /// Default: `1000`
+    /// Too high: a blow-up can throw bodies very far. Too low: fast projectiles are slowed.
+    pub max_linear_speed: f32,
+    /// Spin limit, rad/s.
+    /// Default: `200`
+    /// Too high: unstable integration of spinning bodies. Too low: spinning bodies are slowed.
+    pub max_angular_speed: f32,
+    /// Whether resting islands fall asleep.
+    /// Default: `true`
+    pub sleep_enabled: bool,
+    /// Linear speed below which a body counts as resting, m/s.
+    /// Default: `0.05`
+    /// Too high: slowly moving bodies freeze. Too low: islands never sleep (CPU cost).
+    pub sleep_linear_threshold: f32,
+    /// Angular speed below which a body counts as resting, rad/s.
+    /// Default: `0.1`
+    /// Too high: slow spins freeze. Too low: islands never sleep.
+    pub sleep_angular_threshold: f32,
+    /// Time an island must rest before it sleeps, seconds.
+    /// Default: `0.5`
+    /// Too high: CPU wasted on resting bodies. Too low: bodies freeze at the top of an arc.
+    pub time_to_sleep: f32,
+    /// Global switch for continuous collision detection (bodies also opt in).
+    /// Default: `true`
+    pub ccd_enabled: bool,
+    /// A contact normal with `y` at least this (toward the body) marks the body grounded.
+    /// Default: `0.7`
+    /// Too high: slopes do not count as ground. Too low: walls count as ground.
+    pub grounded_min_normal_y: f32,
+}
+
+impl Default for PhysicsSettings {
+    fn default() -> Self {
+        Self {
+            dt: 1.0 / 60.0,
+            gravity: Vec3::new(0.0, -9.81, 0.0),
+            substeps: 4,
+            solver_iterations: 1,
+            relax_iterations: 1,
+            contact_hertz: 30.0,
+            contact_damping_ratio: 10.0,
+            max_contact_push_speed: 3.0,
+            linear_slop: 0.001,
+            speculative_distance: 0.02,
+            max_speculative_distance: 0.5,
+            aabb_margin: 0.1,
+            restitution_threshold: 1.0,
+            static_friction_speed: 0.05,
+            max_linear_speed: 1000.0,
+            max_angular_speed: 200.0,
+            sleep_enabled: true,
+            sleep_linear_threshold: 0.05,
+            sleep_angular_threshold: 0.1,
+            time_to_sleep: 0.5,
+            ccd_enabled: true,
+            grounded_min_normal_y: 0.7,
+        }
+    }
+}

@@ -1,0 +1,288 @@
+//! [`PhysicsWorld`]: owns bodies, colliders and contact state; runs [`PhysicsWorld::step`].
+
+use std::collections::HashMap;
+use std::time::Instant;
+
+use glam::Vec3;
+
+use crate::body_handle::BodyHandle;
+use crate::body_set::BodySet;
+use crate::body_type::BodyType;
+use crate::broadphase::BroadPhase;
+use crate::collider::NO_PROXY;
+use crate::collider_desc::ColliderDesc;
+use crate::collider_handle::ColliderHandle;
+use crate::collider_set::ColliderSet;
+use crate::contact_event::ContactEvent;
+use crate::mass_properties::MassProperties;
+use crate::narrowphase::NarrowPhase;
+use crate::physics_settings::PhysicsSettings;
+use crate::rigid_body::RigidBody;
+use crate::rigid_body_desc::RigidBodyDesc;
+use crate::solver::contact_constraint::ContactConstraint;
+use crate::solver::solver_body::SolverBody;
+use crate::step_output::StepOutput;
+
+/// The simulation: bodies, colliders, broadphase tree, contact pairs and settings.
+///
+/// Mutate bodies through [`PhysicsWorld::body_mut`]; their setters wake them. Call
+/// [`PhysicsWorld::step`] once per fixed time step.
+#[derive(Debug)]
+pub struct PhysicsWorld {
+    pub(crate) settings: PhysicsSettings,
+    pub(crate) bodies: BodySet,
+    pub(crate) colliders: ColliderSet,
+    pub(crate) broadphase: BroadPhase,
+    pub(crate) narrowphase: NarrowPhase,
+    pub(crate) output: StepOutput,
+    pub(crate) pending_events: Vec<ContactEvent>,
+    pub(crate) solver_bodies: Vec<SolverBody>,
+    /// Body slot index of each solver body (entry 0 unused).
+    pub(crate) solver_handles: Vec<u32>,
+    pub(crate) constraints: Vec<ContactConstraint>,
+    pub(crate) constraint_points: Vec<crate::solver::contact_constraint::ConstraintPoint>,
+    pub(crate) new_pairs: Vec<(u32, u32)>,
+    pub(crate) wake: Vec<BodyHandle>,
+    pub(crate) islands: HashMap<u32, Vec<BodyHandle>>,
+    pub(crate) next_island: u32,
+    pub(crate) time: f64,
+}
+
+impl Default for PhysicsWorld {
+    fn default() -> Self {
+        Self::new(PhysicsSettings::default())
+    }
+}
+
+impl PhysicsWorld {
+    /// Empty world.
+    #[must_use]
+    pub fn new(settings: PhysicsSettings) -> Self {
+        Self {
+            settings,
+            bodies: BodySet::default(),
+            colliders: ColliderSet::default(),
+            broadphase: BroadPhase::default(),
+            narrowphase: NarrowPhase::default(),
+            output: StepOutput::default(),
+            pending_events: Vec::new(),
+            solver_bodies: Vec::new(),
+            solver_handles: Vec::new(),
+            constraints: Vec::new(),
+            constraint_points: Vec::new(),
+            new_pairs: Vec::new(),
+            wake: Vec::new(),
+            islands: HashMap::new(),
+            next_island: 0,
+            time: 0.0,
+        }
+    }
+
+    /// Settings.
+    #[must_use]
+    pub fn settings(&self) -> &PhysicsSettings {
+        &self.settings
+    }
+
+    /// Mutable settings (take effect at the next step).
+    pub fn settings_mut(&mut self) -> &mut PhysicsSettings {
+        &mut self.settings
+    }
+
+    /// Simulated time, seconds.
+    #[must_use]
+    pub fn time(&self) -> f64 {
+        self.time
+    }
+
+    /// All bodies.
+    #[must_use]
+    pub fn bodies(&self) -> &BodySet {
+        &self.bodies
+    }
+
+    /// All colliders.
+    #[must_use]
+    pub fn colliders(&self) -> &ColliderSet {
+        &self.colliders
+    }
+
+    /// Contact pairs (manifolds, impulses).
+    #[must_use]
+    pub fn narrowphase(&self) -> &NarrowPhase {
+        &self.narrowphase
+    }
+
+    /// The broadphase (tree of collider bounds).
+    #[must_use]
+    pub fn broadphase(&self) -> &BroadPhase {
+        &self.broadphase
+    }
+
+    /// Output of the last step.
+    #[must_use]
+    pub fn last_step(&self) -> &StepOutput {
+        &self.output
+    }
+
+    /// A body.
+    #[must_use]
+    pub fn body(&self, h: BodyHandle) -> Option<&RigidBody> {
+        self.bodies.get(h)
+    }
+
+    /// A body, mutably (setters wake it).
+    pub fn body_mut(&mut self, h: BodyHandle) -> Option<&mut RigidBody> {
+        self.bodies.get_mut(h)
+    }
+
+    /// A collider.
+    #[must_use]
+    pub fn collider(&self, h: ColliderHandle) -> Option<&crate::collider::Collider> {
+        self.colliders.get(h)
+    }
+
+    /// Adds a body; attach colliders with [`PhysicsWorld::insert_collider`].
+    pub fn insert_body(&mut self, desc: RigidBodyDesc) -> BodyHandle {
+        let (i, g) = self.bodies.arena.insert(desc.build());
+        BodyHandle::from_parts(i, g)
+    }
+
+    /// Attaches a collider to a body and updates the body's mass (unless set explicitly).
+    /// Returns `None` if the body does not exist.
+    pub fn insert_collider(
+        &mut self,
+        desc: ColliderDesc,
+        parent: BodyHandle,
+    ) -> Option<ColliderHandle> {
+        let body = self.bodies.get(parent)?;
+        let body_pose = body.pose;
+        let mut c = desc.build(parent);
+        let pose = body_pose.mul_pose(&c.local_pose);
+        c.aabb = c.shape.aabb(&pose);
+        let (i, g) = self.colliders.arena.insert(c);
+        let proxy = self.broadphase.create_proxy(
+            self.colliders.arena.get(i, g)?.aabb,
+            self.settings.aabb_margin,
+            i,
+        );
+        self.colliders.arena.get_mut(i, g)?.proxy = proxy;
+        let h = ColliderHandle::from_parts(i, g);
+        let body = self.bodies.get_mut(parent)?;
+        body.colliders.push(h);
+        body.wake_up();
+        self.recompute_mass(parent);
+        Some(h)
+    }
+
+    /// Removes a collider (reports `Ended` for its touching contacts at the next step).
+    pub fn remove_collider(&mut self, h: ColliderHandle) -> bool {
+        let Some(c) = self.colliders.arena.remove(h.index(), h.generation()) else {
+            return false;
+        };
+        if c.proxy != NO_PROXY {
+            self.broadphase.destroy_proxy(c.proxy);
+        }
+        // Wake bodies that touched it.
+        for p in self.narrowphase.pairs() {
+            if p.touching && (p.collider_a == h || p.collider_b == h) {
+                self.wake.push(p.body_a);
+                self.wake.push(p.body_b);
+            }
+        }
+        self.narrowphase
+            .remove_collider(h, &self.bodies, &mut self.pending_events);
+        if let Some(b) = self.bodies.get_mut(c.parent) {
+            b.colliders.retain(|&x| x != h);
+            b.wake_up();
+            self.recompute_mass(c.parent);
+        }
+        true
+    }
+
+    /// Removes a body and its colliders.
+    pub fn remove_body(&mut self, h: BodyHandle) -> bool {
+        let Some(b) = self.bodies.get(h) else {
+            return false;
+        };
+        for c in b.colliders.clone() {
+            self.remove_collider(c);
+        }
+        self.bodies
+            .arena
+            .remove(h.index(), h.generation())
+            .is_some()
+    }
+
+    /// Recomputes a body's mass properties from its colliders (or its explicit override).
+    pub(crate) fn recompute_mass(&mut self, h: BodyHandle) {
+        let Some(b) = self.bodies.get(h) else {
+            return;
+        };
+        let mp = if let Some(mp) = b.mass_override {
+            mp
+        } else {
+            let mut acc = MassProperties::ZERO;
+            for &ch in &b.colliders {
+                if let Some(c) = self.colliders.get(ch) {
+                    let m = c
+                        .shape
+                        .mass_properties(c.density)
+                        .transformed(&c.local_pose);
+                    acc = acc.combined(&m);
+                }
+            }
+            acc
+        };
+        let Some(b) = self.bodies.get_mut(h) else {
+            return;
+        };
+        b.mass = mp;
+        if b.body_type != BodyType::Dynamic {
+            b.mass.local_com = Vec3::ZERO;
+        }
+        b.update_inverse_mass();
+    }
+
+    /// Advances the simulation by `settings.dt`: broadphase → narrowphase → solve
+    /// (substeps with integration) → write-back and CCD → sleep → events.
+    pub fn step(&mut self) -> &StepOutput {
+        let t_start = Instant::now();
+        self.output.events.clear();
+        self.output.events.append(&mut self.pending_events);
+        self.output.quarantined.clear();
+        self.output.counters = Default::default();
+        if !(self.settings.dt > 0.0 && self.settings.dt.is_finite()) {
+            return &self.output;
+        }
+        self.prestep();
+
+        let t = Instant::now();
+        self.broadphase_stage();
+        self.output.counters.broadphase = t.elapsed();
+
+        let t = Instant::now();
+        self.narrowphase_stage();
+        self.output.counters.narrowphase = t.elapsed();
+
+        let t = Instant::now();
+        self.solve_stage();
+        self.output.counters.solve = t.elapsed();
+
+        // Integrate (write-back) includes CCD, timed apart inside.
+        let t = Instant::now();
+        self.writeback_stage();
+        self.output.counters.integrate = t.elapsed().saturating_sub(self.output.counters.ccd);
+
+        let t = Instant::now();
+        self.update_touching();
+        self.sleep_stage();
+        self.contact_report_stage();
+        self.output.counters.sleep = t.elapsed();
+
+        self.time += f64::from(self.settings.dt);
+        self.output.counters.pairs = self.narrowphase.pairs.len() as u32;
+        self.output.counters.total = t_start.elapsed();
+        &self.output
+    }
+}

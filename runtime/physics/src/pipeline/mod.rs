@@ -1,0 +1,10 @@
+//! Private step stages, each an `impl PhysicsWorld` block in its own file.
+
+mod broadphase_stage;
+pub mod ccd;
+mod contact_report_stage;
+mod narrowphase_stage;
+mod prestep;
+mod sleep_stage;
+mod solve_stage;
+mod writeback_stage;

@@ -1,0 +1,32 @@
+//! Narrowphase stage: regenerate manifolds of active pairs, collect wake-ups.
+
+use crate::narrowphase::NarrowStats;
+use crate::physics_world::PhysicsWorld;
+
+impl PhysicsWorld {
+    pub(crate) fn narrowphase_stage(&mut self) {
+        let mut stats = NarrowStats::default();
+        let mut wake = std::mem::take(&mut self.wake);
+        self.narrowphase.update(
+            &self.bodies,
+            &self.colliders,
+            &self.broadphase,
+            &self.settings,
+            &mut stats,
+            &mut self.output.events,
+            &mut wake,
+        );
+        // Wake touched sleepers now so they take part in this step's solve (their contacts
+        // with static bodies are unchanged since they fell asleep).
+        for h in wake.drain(..) {
+            self.wake_island(h);
+        }
+        self.wake = wake;
+        let c = &mut self.output.counters;
+        c.gjk_calls = stats.gjk_calls;
+        c.gjk_iterations = stats.gjk_iterations;
+        c.gjk_not_converged = stats.gjk_not_converged;
+        c.epa_calls = stats.epa_calls;
+        c.epa_failures = stats.epa_failures;
+    }
+}

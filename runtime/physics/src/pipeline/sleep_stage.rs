@@ -1,0 +1,86 @@
+//! Sleep stage: islands of touching dynamic bodies (union–find); islands at rest long
+//! enough fall asleep together.
+
+use glam::Vec3;
+
+use crate::body_type::BodyType;
+use crate::physics_world::PhysicsWorld;
+
+fn find(parent: &mut [u32], mut x: u32) -> u32 {
+    while parent[x as usize] != x {
+        let p = parent[x as usize];
+        parent[x as usize] = parent[p as usize];
+        x = p;
+    }
+    x
+}
+
+impl PhysicsWorld {
+    pub(crate) fn sleep_stage(&mut self) {
+        let s = self.settings;
+        let n = self.solver_bodies.len();
+        if !s.sleep_enabled || n <= 1 {
+            return;
+        }
+        let mut parent: Vec<u32> = (0..n as u32).collect();
+        for c in &self.constraints {
+            let (a, b) = (c.body_a, c.body_b);
+            if a == 0 || b == 0 {
+                continue;
+            }
+            if !self.narrowphase.pairs[c.pair as usize].touching {
+                continue;
+            }
+            // Kinematic bodies (zero inverse mass) do not join islands.
+            if self.solver_bodies[a as usize].inv_mass == Vec3::ZERO
+                || self.solver_bodies[b as usize].inv_mass == Vec3::ZERO
+            {
+                continue;
+            }
+            let (ra, rb) = (find(&mut parent, a), find(&mut parent, b));
+            if ra != rb {
+                parent[ra.max(rb) as usize] = ra.min(rb);
+            }
+        }
+        // Update timers; island minimum.
+        let mut island_min = vec![f32::MAX; n];
+        for k in 1..n {
+            let idx = self.solver_handles[k];
+            let Some(b) = self.bodies.arena.get_by_index_mut(idx) else {
+                continue;
+            };
+            let resting = b.linvel.length() < s.sleep_linear_threshold
+                && b.angvel.length() < s.sleep_angular_threshold
+                && b.can_sleep
+                && b.kinematic_target.is_none()
+                && !b.quarantined;
+            b.sleep_timer = if resting { b.sleep_timer + s.dt } else { 0.0 };
+            let r = find(&mut parent, k as u32) as usize;
+            island_min[r] = island_min[r].min(b.sleep_timer);
+        }
+        let mut island_ids: std::collections::HashMap<u32, u32> = std::collections::HashMap::new();
+        for k in 1..n {
+            let r = find(&mut parent, k as u32);
+            if island_min[r as usize] < s.time_to_sleep {
+                continue;
+            }
+            let idx = self.solver_handles[k];
+            let handle = self.bodies.handle_of(idx);
+            let id = *island_ids.entry(r).or_insert_with(|| {
+                self.next_island = self.next_island.wrapping_add(1) % (u32::MAX - 1);
+                self.next_island
+            });
+            if let Some(b) = self.bodies.arena.get_by_index_mut(idx) {
+                if b.body_type == BodyType::Static {
+                    continue;
+                }
+                b.sleeping = true;
+                b.linvel = Vec3::ZERO;
+                b.angvel = Vec3::ZERO;
+                b.island = id;
+                self.islands.entry(id).or_default().push(handle);
+            }
+        }
+        self.output.counters.islands_slept = island_ids.len() as u32;
+    }
+}

@@ -1,0 +1,174 @@
+//! Solve stage: gather awake bodies and manifolds into solver arrays and run the substeps.
+
+use glam::Vec3;
+
+use crate::body_type::BodyType;
+use crate::narrowphase::narrow_phase::is_active;
+use crate::physics_world::PhysicsWorld;
+use crate::rigid_body::mask_mat;
+use crate::solver::contact_constraint::{prepare, ConstraintPoint, ContactConstraint};
+use crate::solver::solve::{solve_substeps, SolveParams};
+use crate::solver::solver_body::SolverBody;
+use crate::solver::Softness;
+
+impl PhysicsWorld {
+    pub(crate) fn solve_stage(&mut self) {
+        let s = self.settings;
+        let substeps = s.substeps.max(1);
+        let h = s.dt / substeps as f32;
+        self.solver_bodies.clear();
+        self.solver_handles.clear();
+        self.solver_bodies.push(SolverBody::STATIC);
+        self.solver_handles.push(u32::MAX);
+        for (i, _g, b) in self.bodies.arena.iter_mut() {
+            b.solver_index = 0;
+            if !is_active(b) {
+                continue;
+            }
+            b.solver_index = self.solver_bodies.len() as u32;
+            self.solver_handles.push(i);
+            let dynamic = b.body_type == BodyType::Dynamic;
+            let lin_mask = b.locked.translation_mask();
+            let ang_mask = b.locked.rotation_mask();
+            let inv_i = if dynamic {
+                b.world_inv_inertia()
+            } else {
+                glam::Mat3::ZERO
+            };
+            let (lin_acc, ang_acc) = if dynamic {
+                let g = if b.gravity_enabled {
+                    s.gravity * b.gravity_scale
+                } else {
+                    Vec3::ZERO
+                };
+                (g + b.force * b.inv_mass, inv_i * b.torque)
+            } else {
+                (Vec3::ZERO, Vec3::ZERO)
+            };
+            self.solver_bodies.push(SolverBody {
+                v: b.linvel * if dynamic { lin_mask } else { Vec3::ONE },
+                w: b.angvel * if dynamic { ang_mask } else { Vec3::ONE },
+                dp: Vec3::ZERO,
+                dq: glam::Quat::IDENTITY,
+                dtheta: Vec3::ZERO,
+                inv_mass: if dynamic {
+                    lin_mask * b.inv_mass
+                } else {
+                    Vec3::ZERO
+                },
+                inv_i: mask_mat(inv_i, ang_mask),
+                lin_acc,
+                ang_acc,
+                lin_damp: if dynamic { b.linear_damping } else { 0.0 },
+                ang_damp: if dynamic { b.angular_damping } else { 0.0 },
+                lin_mask: if dynamic { lin_mask } else { Vec3::ONE },
+                ang_mask: if dynamic { ang_mask } else { Vec3::ONE },
+                q0: b.pose.rotation,
+                inertia_local: b.mass.inertia,
+                inv_inertia_local: b.inv_inertia_local,
+                gyro: dynamic && b.anisotropic && b.locked.0 & 56 == 0,
+            });
+        }
+        self.output.counters.awake_bodies = (self.solver_bodies.len() - 1) as u32;
+
+        // Constraints.
+        let hertz = s.contact_hertz.min(0.25 / h);
+        let soft = Softness::new(hertz, s.contact_damping_ratio, h);
+        let static_soft = Softness::new(2.0 * hertz, s.contact_damping_ratio, h);
+        self.constraints.clear();
+        self.constraint_points.clear();
+        let mut contacts = 0u32;
+        for (pi, pair) in self.narrowphase.pairs.iter().enumerate() {
+            let (Some(ba), Some(bb)) = (self.bodies.get(pair.body_a), self.bodies.get(pair.body_b))
+            else {
+                continue;
+            };
+            let (ia, ib) = (ba.solver_index, bb.solver_index);
+            if ia == 0 && ib == 0 {
+                continue;
+            }
+            let a_dyn = ia != 0 && ba.body_type == BodyType::Dynamic;
+            let b_dyn = ib != 0 && bb.body_type == BodyType::Dynamic;
+            if !a_dyn && !b_dyn {
+                continue;
+            }
+            for (mi, m) in pair.manifolds.iter().enumerate() {
+                if m.points.is_empty() {
+                    continue;
+                }
+                let n = m.normal;
+                let t1 = m.tangent1;
+                let t2 = n.cross(t1);
+                let mut c = ContactConstraint {
+                    body_a: ia,
+                    body_b: ib,
+                    normal: n,
+                    tangent: [t1, t2],
+                    restitution: pair.restitution,
+                    softness: if a_dyn && b_dyn { soft } else { static_soft },
+                    first: self.constraint_points.len() as u32,
+                    count: 0,
+                    pair: pi as u32,
+                    manifold: mi as u32,
+                };
+                let mut anchors = [(Vec3::ZERO, Vec3::ZERO); 4];
+                for (k, p) in m.points.iter().take(4).enumerate() {
+                    anchors[k] = (p.anchor_a, p.anchor_b);
+                    self.constraint_points.push(ConstraintPoint {
+                        base_separation: p.separation,
+                        normal_impulse: p.normal_impulse,
+                        tangent_impulse: [p.tangent_impulse.dot(t1), p.tangent_impulse.dot(t2)],
+                        ..ConstraintPoint::default()
+                    });
+                    c.count += 1;
+                }
+                contacts += u32::from(c.count);
+                let first = c.first as usize;
+                prepare(
+                    &c,
+                    &mut self.constraint_points[first..],
+                    &anchors[..c.count as usize],
+                    &self.solver_bodies,
+                    pair.static_friction,
+                    pair.dynamic_friction,
+                    s.static_friction_speed,
+                );
+                self.constraints.push(c);
+            }
+        }
+        self.output.counters.manifolds = self.constraints.len() as u32;
+        self.output.counters.contacts = contacts;
+
+        let params = SolveParams {
+            dt: s.dt,
+            substeps,
+            iterations: s.solver_iterations,
+            relax_iterations: s.relax_iterations,
+            slop: s.linear_slop,
+            max_push: s.max_contact_push_speed,
+            restitution_threshold: s.restitution_threshold,
+            max_linear_speed: s.max_linear_speed,
+            max_angular_speed: s.max_angular_speed,
+        };
+        solve_substeps(
+            &mut self.solver_bodies,
+            &self.constraints,
+            &mut self.constraint_points,
+            &params,
+        );
+
+        // Store impulses for warm starting and events.
+        for c in &self.constraints {
+            let m = &mut self.narrowphase.pairs[c.pair as usize].manifolds[c.manifold as usize];
+            let pts =
+                &self.constraint_points[c.first as usize..c.first as usize + c.count as usize];
+            for (k, cp) in pts.iter().enumerate() {
+                let p = &mut m.points[k];
+                p.normal_impulse = cp.normal_impulse;
+                p.tangent_impulse =
+                    c.tangent[0] * cp.tangent_impulse[0] + c.tangent[1] * cp.tangent_impulse[1];
+                p.max_normal_impulse = cp.max_normal_impulse;
+            }
+        }
+    }
+}

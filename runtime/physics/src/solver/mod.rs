@@ -1,0 +1,8 @@
+//! Soft-step impulse solver: [`Softness`], solver bodies, contact constraints, substep loop.
+
+pub(crate) mod contact_constraint;
+pub mod softness;
+pub(crate) mod solve;
+pub(crate) mod solver_body;
+
+pub use softness::Softness;

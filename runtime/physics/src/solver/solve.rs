@@ -1,0 +1,118 @@
+//! [`solve_substeps`]: the soft-step loop (integrate velocities → warm start → solve →
+//! integrate positions → relax, per substep; restitution at the end).
+
+use glam::{Quat, Vec3};
+
+use super::contact_constraint::{
+    apply_restitution, solve, warm_start, ConstraintPoint, ContactConstraint,
+};
+use super::solver_body::SolverBody;
+
+/// Parameters of one solver run (derived from `PhysicsSettings`).
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct SolveParams {
+    pub dt: f32,
+    pub substeps: u32,
+    pub iterations: u32,
+    pub relax_iterations: u32,
+    pub slop: f32,
+    pub max_push: f32,
+    pub restitution_threshold: f32,
+    pub max_linear_speed: f32,
+    pub max_angular_speed: f32,
+}
+
+/// Runs all substeps over awake bodies and their constraints.
+pub(crate) fn solve_substeps(
+    bodies: &mut [SolverBody],
+    constraints: &[ContactConstraint],
+    points: &mut [ConstraintPoint],
+    p: &SolveParams,
+) {
+    let range = |c: &ContactConstraint| c.first as usize..c.first as usize + c.count as usize;
+    let substeps = p.substeps.max(1);
+    let h = p.dt / substeps as f32;
+    let inv_h = 1.0 / h;
+    for _ in 0..substeps {
+        integrate_velocities(bodies, h, p);
+        for c in constraints {
+            warm_start(c, &points[range(c)], bodies);
+        }
+        for _ in 0..p.iterations.max(1) {
+            for c in constraints {
+                solve(
+                    c,
+                    &mut points[range(c)],
+                    bodies,
+                    inv_h,
+                    true,
+                    p.slop,
+                    p.max_push,
+                );
+            }
+        }
+        integrate_positions(bodies, h);
+        for _ in 0..p.relax_iterations {
+            for c in constraints {
+                solve(
+                    c,
+                    &mut points[range(c)],
+                    bodies,
+                    inv_h,
+                    false,
+                    p.slop,
+                    p.max_push,
+                );
+            }
+        }
+    }
+    for c in constraints {
+        apply_restitution(c, &mut points[range(c)], bodies, p.restitution_threshold);
+    }
+}
+
+fn integrate_velocities(bodies: &mut [SolverBody], h: f32, p: &SolveParams) {
+    for b in bodies.iter_mut().skip(1) {
+        let mut v = b.v + b.lin_acc * h;
+        let mut w = b.w + b.ang_acc * h;
+        v *= 1.0 / (1.0 + h * b.lin_damp);
+        w *= 1.0 / (1.0 + h * b.ang_damp);
+        let vl = v.length();
+        if vl > p.max_linear_speed {
+            v *= p.max_linear_speed / vl;
+        }
+        let wl = w.length();
+        if wl > p.max_angular_speed {
+            w *= p.max_angular_speed / wl;
+        }
+        b.v = v * b.lin_mask;
+        b.w = w * b.ang_mask;
+    }
+}
+
+fn integrate_positions(bodies: &mut [SolverBody], h: f32) {
+    for b in bodies.iter_mut().skip(1) {
+        b.dp += b.v * h;
+        b.dtheta += b.w * h;
+        let w = b.w;
+        if w == Vec3::ZERO {
+            continue;
+        }
+        let q_old = b.dq * b.q0;
+        let dq = b.dq;
+        let spin = Quat::from_xyzw(w.x, w.y, w.z, 0.0) * dq;
+        b.dq = Quat::from_xyzw(
+            dq.x + 0.5 * h * spin.x,
+            dq.y + 0.5 * h * spin.y,
+            dq.z + 0.5 * h * spin.z,
+            dq.w + 0.5 * h * spin.w,
+        )
+        .normalize();
+        if b.gyro {
+            // Free rotation keeps world angular momentum L = R I Rᵀ ω.
+            let q_new = b.dq * b.q0;
+            let l = q_old * (b.inertia_local * (q_old.inverse() * w));
+            b.w = (q_new * (b.inv_inertia_local * (q_new.inverse() * l))) * b.ang_mask;
+        }
+    }
+}

@@ -1,0 +1,67 @@
+//! [`SolverBody`]: per-step velocity state of an awake body inside the solver.
+
+use glam::{Mat3, Quat, Vec3};
+
+/// Velocity-level state of one awake dynamic or kinematic body during a step.
+/// Index 0 of the solver array is a dummy for static/sleeping bodies (all zero).
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct SolverBody {
+    /// Linear velocity of the centre of mass, m/s.
+    pub v: Vec3,
+    /// Angular velocity, rad/s.
+    pub w: Vec3,
+    /// Displacement of the centre of mass since the step began, m.
+    pub dp: Vec3,
+    /// Rotation since the step began (world frame, applied before the start rotation).
+    pub dq: Quat,
+    /// Accumulated rotation vector since the step began (Σ ω·h), for linearised contact
+    /// separation updates.
+    pub dtheta: Vec3,
+    /// Inverse mass per world axis (0 on locked axes), 1/kg.
+    pub inv_mass: Vec3,
+    /// World inverse inertia (locked rows/columns zeroed), fixed for the step.
+    pub inv_i: Mat3,
+    /// Constant linear acceleration (gravity + force / m), m/s².
+    pub lin_acc: Vec3,
+    /// Constant angular acceleration (I⁻¹ torque), rad/s².
+    pub ang_acc: Vec3,
+    /// Linear damping, 1/s.
+    pub lin_damp: f32,
+    /// Angular damping, 1/s.
+    pub ang_damp: f32,
+    /// 1 where translation is free, 0 where locked.
+    pub lin_mask: Vec3,
+    /// 1 where rotation is free, 0 where locked.
+    pub ang_mask: Vec3,
+    /// Orientation at step start.
+    pub q0: Quat,
+    /// Local inertia and its inverse (for angular-momentum-preserving free rotation).
+    pub inertia_local: Mat3,
+    /// Inverse of `inertia_local`.
+    pub inv_inertia_local: Mat3,
+    /// Apply the gyroscopic (momentum-preserving) update.
+    pub gyro: bool,
+}
+
+impl SolverBody {
+    /// The static dummy.
+    pub const STATIC: Self = Self {
+        v: Vec3::ZERO,
+        w: Vec3::ZERO,
+        dp: Vec3::ZERO,
+        dq: Quat::IDENTITY,
+        dtheta: Vec3::ZERO,
+        inv_mass: Vec3::ZERO,
+        inv_i: Mat3::ZERO,
+        lin_acc: Vec3::ZERO,
+        ang_acc: Vec3::ZERO,
+        lin_damp: 0.0,
+        ang_damp: 0.0,
+        lin_mask: Vec3::ZERO,
+        ang_mask: Vec3::ZERO,
+        q0: Quat::IDENTITY,
+        inertia_local: Mat3::ZERO,
+        inv_inertia_local: Mat3::ZERO,
+        gyro: false,
+    };
+}

@@ -1,0 +1,16 @@
+//! [`StepOutput`]: everything a step reports (counters, events, quarantined bodies).
+
+use crate::body_handle::BodyHandle;
+use crate::contact_event::ContactEvent;
+use crate::step_counters::StepCounters;
+
+/// What [`crate::PhysicsWorld::step`] returns; valid until the next step.
+#[derive(Clone, Debug, Default)]
+pub struct StepOutput {
+    /// Timings and work counts.
+    pub counters: StepCounters,
+    /// Contact starts and ends of this step (plus ends caused by removals since the last step).
+    pub events: Vec<ContactEvent>,
+    /// Bodies whose state went non-finite this step: rolled back, disabled.
+    pub quarantined: Vec<BodyHandle>,
+}

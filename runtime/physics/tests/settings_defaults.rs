@@ -1,0 +1,70 @@
+//! The documented defaults of `PhysicsSettings` ("Default: `…`" doc lines) equal `Default`.
+use onyx_physics::PhysicsSettings;
+
+fn parse_num(s: &str) -> f32 {
+    if let Some((a, b)) = s.split_once('/') {
+        return a.trim().parse::<f32>().unwrap() / b.trim().parse::<f32>().unwrap();
+    }
+    s.trim()
+        .parse::<f32>()
+        .unwrap_or_else(|_| panic!("not a number: {s}"))
+}
+
+#[test]
+fn documented_defaults_equal_default_impl() {
+    let src = include_str!("../src/physics_settings.rs");
+    let d = PhysicsSettings::default();
+    let mut pending: Option<String> = None;
+    let mut checked = 0;
+    for line in src.lines() {
+        let t = line.trim();
+        if let Some(rest) = t.strip_prefix("/// Default: `") {
+            pending = Some(rest.split('`').next().unwrap().to_string());
+        } else if let Some(rest) = t.strip_prefix("pub ") {
+            let Some((name, _)) = rest.split_once(':') else {
+                continue;
+            };
+            let doc = pending
+                .take()
+                .unwrap_or_else(|| panic!("field {name} has no `Default:` doc line"));
+            let ok = match name {
+                "dt" => (parse_num(&doc) - d.dt).abs() < 1e-9,
+                "gravity" => {
+                    let v: Vec<f32> = doc
+                        .trim_matches(|c| c == '(' || c == ')')
+                        .split(',')
+                        .map(parse_num)
+                        .collect();
+                    v == [d.gravity.x, d.gravity.y, d.gravity.z]
+                }
+                "substeps" => parse_num(&doc) as u32 == d.substeps,
+                "solver_iterations" => parse_num(&doc) as u32 == d.solver_iterations,
+                "relax_iterations" => parse_num(&doc) as u32 == d.relax_iterations,
+                "contact_hertz" => parse_num(&doc) == d.contact_hertz,
+                "contact_damping_ratio" => parse_num(&doc) == d.contact_damping_ratio,
+                "max_contact_push_speed" => parse_num(&doc) == d.max_contact_push_speed,
+                "linear_slop" => parse_num(&doc) == d.linear_slop,
+                "speculative_distance" => parse_num(&doc) == d.speculative_distance,
+                "max_speculative_distance" => parse_num(&doc) == d.max_speculative_distance,
+                "aabb_margin" => parse_num(&doc) == d.aabb_margin,
+                "restitution_threshold" => parse_num(&doc) == d.restitution_threshold,
+                "static_friction_speed" => parse_num(&doc) == d.static_friction_speed,
+                "max_linear_speed" => parse_num(&doc) == d.max_linear_speed,
+                "max_angular_speed" => parse_num(&doc) == d.max_angular_speed,
+                "sleep_enabled" => doc.parse::<bool>().unwrap() == d.sleep_enabled,
+                "sleep_linear_threshold" => parse_num(&doc) == d.sleep_linear_threshold,
+                "sleep_angular_threshold" => parse_num(&doc) == d.sleep_angular_threshold,
+                "time_to_sleep" => parse_num(&doc) == d.time_to_sleep,
+                "ccd_enabled" => doc.parse::<bool>().unwrap() == d.ccd_enabled,
+                "grounded_min_normal_y" => parse_num(&doc) == d.grounded_min_normal_y,
+                other => panic!("test does not know field {other}: add it"),
+            };
+            assert!(
+                ok,
+                "field {name}: documented default `{doc}` differs from Default::default() = {d:?}"
+            );
+            checked += 1;
+        }
+    }
+    assert_eq!(checked, 22, "every settings field checked");
+}

@@ -1,0 +1,51 @@
+//! [`MeshCache`]: every mesh uploaded to a renderer, and loaded models by path.
+
+use std::collections::HashMap;
+use std::path::{Path, PathBuf};
+
+use super::gpu_mesh::GpuMesh;
+use super::mesh_data::MeshData;
+use super::mesh_handle::MeshHandle;
+use super::model::Model;
+
+/// Uploaded meshes (indexed by [`MeshHandle`]) and models loaded from files.
+#[derive(Debug, Default)]
+pub(crate) struct MeshCache {
+    meshes: Vec<GpuMesh>,
+    models: HashMap<PathBuf, Model>,
+}
+
+impl MeshCache {
+    /// Uploads a valid mesh.
+    pub(crate) fn add(
+        &mut self,
+        device: &wgpu::Device,
+        data: &MeshData,
+        label: &str,
+    ) -> MeshHandle {
+        let handle = MeshHandle(self.meshes.len() as u32);
+        self.meshes.push(GpuMesh::upload(device, data, label));
+        handle
+    }
+
+    pub(crate) fn get(&self, handle: MeshHandle) -> Option<&GpuMesh> {
+        self.meshes.get(handle.0 as usize)
+    }
+
+    pub(crate) fn len(&self) -> usize {
+        self.meshes.len()
+    }
+
+    pub(crate) fn model(&self, key: &Path) -> Option<&Model> {
+        self.models.get(key)
+    }
+
+    pub(crate) fn insert_model(&mut self, key: PathBuf, model: Model) {
+        self.models.insert(key, model);
+    }
+}
+
+/// The key a file is cached under: its canonical path when it exists, else the path given.
+pub(crate) fn cache_key(path: &Path) -> PathBuf {
+    std::fs::canonicalize(path).unwrap_or_else(|_| path.to_owned())
+}

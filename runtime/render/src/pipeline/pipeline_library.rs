@@ -1,0 +1,264 @@
+//! [`PipelineLibrary`]: compiles shaders inside error scopes, builds pipelines on demand per
+//! (shader, target format, sample count) and keeps the last good ones when a reload fails.
+
+use std::collections::HashMap;
+
+use super::layouts::{self, Layouts};
+use super::shader_error::ShaderError;
+use super::shader_kind::ShaderKind;
+use super::shader_source::ShaderSource;
+use crate::shading_mode::ShadingMode;
+
+/// Identifies one pipeline: shader, colour format and MSAA sample count.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub(crate) struct PipelineKey {
+    pub(crate) kind: ShaderKind,
+    pub(crate) format: wgpu::TextureFormat,
+    pub(crate) samples: u32,
+}
+
+/// All shader modules and pipelines.
+#[derive(Debug)]
+pub(crate) struct PipelineLibrary {
+    source: ShaderSource,
+    layouts: Layouts,
+    modules: HashMap<ShaderKind, wgpu::ShaderModule>,
+    pipelines: HashMap<PipelineKey, wgpu::RenderPipeline>,
+}
+
+impl PipelineLibrary {
+    /// Compiles every shader from `source`. A shader that fails from the folder falls back to
+    /// its embedded copy (and is reported in the returned list); an embedded shader that
+    /// fails is an error.
+    pub(crate) fn new(
+        device: &wgpu::Device,
+        source: ShaderSource,
+    ) -> Result<(Self, Vec<ShaderError>), ShaderError> {
+        let layouts = Layouts::new(device);
+        let mut modules = HashMap::new();
+        let mut warnings = Vec::new();
+        for kind in ShaderKind::ALL {
+            let from_source = source
+                .read(kind.file())
+                .and_then(|text| compile(device, kind, &text));
+            let module = match from_source {
+                Ok(module) => module,
+                Err(error) => {
+                    tracing::warn!(%error, shader = kind.file(), "using the embedded shader instead");
+                    warnings.push(error);
+                    compile(device, kind, &ShaderSource::read_embedded(kind.file()))?
+                }
+            };
+            modules.insert(kind, module);
+        }
+        Ok((
+            Self {
+                source,
+                layouts,
+                modules,
+                pipelines: HashMap::new(),
+            },
+            warnings,
+        ))
+    }
+
+    pub(crate) fn layouts(&self) -> &Layouts {
+        &self.layouts
+    }
+
+    /// The pipeline for `key`, built on first use. `None` only if building it failed (logged).
+    pub(crate) fn get(
+        &mut self,
+        device: &wgpu::Device,
+        key: PipelineKey,
+    ) -> Option<&wgpu::RenderPipeline> {
+        if !self.pipelines.contains_key(&key) {
+            let module = self.modules.get(&key.kind)?;
+            match build_pipeline(device, &self.layouts, module, key) {
+                Ok(pipeline) => {
+                    self.pipelines.insert(key, pipeline);
+                }
+                Err(message) => {
+                    tracing::error!(shader = key.kind.file(), %message, "could not build pipeline");
+                    return None;
+                }
+            }
+        }
+        self.pipelines.get(&key)
+    }
+
+    /// Re-reads and recompiles every shader. A shader that fails keeps its last good module
+    /// and pipelines; the failures are returned.
+    pub(crate) fn reload(&mut self, device: &wgpu::Device) -> Vec<ShaderError> {
+        let mut failures = Vec::new();
+        for kind in ShaderKind::ALL {
+            match self.reload_one(device, kind) {
+                Ok(()) => tracing::debug!(shader = kind.file(), "shader reloaded"),
+                Err(error) => {
+                    tracing::warn!(%error, "shader reload failed, keeping the previous version");
+                    failures.push(error);
+                }
+            }
+        }
+        failures
+    }
+
+    fn reload_one(&mut self, device: &wgpu::Device, kind: ShaderKind) -> Result<(), ShaderError> {
+        let text = self.source.read(kind.file())?;
+        let module = compile(device, kind, &text)?;
+        let keys: Vec<PipelineKey> = self
+            .pipelines
+            .keys()
+            .filter(|k| k.kind == kind)
+            .copied()
+            .collect();
+        let mut rebuilt = Vec::with_capacity(keys.len());
+        for key in keys {
+            let pipeline =
+                build_pipeline(device, &self.layouts, &module, key).map_err(|message| {
+                    ShaderError::Compile {
+                        shader: kind.file().to_owned(),
+                        message,
+                    }
+                })?;
+            rebuilt.push((key, pipeline));
+        }
+        self.modules.insert(kind, module);
+        self.pipelines.extend(rebuilt);
+        Ok(())
+    }
+}
+
+/// Creates a shader module inside a validation error scope, so bad WGSL is an error value.
+fn compile(
+    device: &wgpu::Device,
+    kind: ShaderKind,
+    text: &str,
+) -> Result<wgpu::ShaderModule, ShaderError> {
+    let scope = device.push_error_scope(wgpu::ErrorFilter::Validation);
+    let module = device.create_shader_module(wgpu::ShaderModuleDescriptor {
+        label: Some(kind.file()),
+        source: wgpu::ShaderSource::Wgsl(text.into()),
+    });
+    match pollster::block_on(scope.pop()) {
+        None => Ok(module),
+        Some(error) => Err(ShaderError::Compile {
+            shader: kind.file().to_owned(),
+            message: error.to_string(),
+        }),
+    }
+}
+
+/// Builds one pipeline inside a validation error scope.
+fn build_pipeline(
+    device: &wgpu::Device,
+    layouts: &Layouts,
+    module: &wgpu::ShaderModule,
+    key: PipelineKey,
+) -> Result<wgpu::RenderPipeline, String> {
+    let scope = device.push_error_scope(wgpu::ErrorFilter::Validation);
+    let pipeline = create_pipeline(device, layouts, module, key);
+    match pollster::block_on(scope.pop()) {
+        None => Ok(pipeline),
+        Some(error) => Err(error.to_string()),
+    }
+}
+
+fn create_pipeline(
+    device: &wgpu::Device,
+    layouts: &Layouts,
+    module: &wgpu::ShaderModule,
+    key: PipelineKey,
+) -> wgpu::RenderPipeline {
+    let mesh_buffers = [
+        Some(layouts::vertex_layout()),
+        Some(layouts::instance_layout()),
+    ];
+    let line_buffers = [Some(layouts::line_layout())];
+    let (layout, buffers, cull_mode, blend, depth_write, depth_compare): (_, &[_], _, _, _, _) =
+        match key.kind {
+            ShaderKind::Mesh(mode) => (
+                if mode.uses_texture() {
+                    &layouts.textured
+                } else {
+                    &layouts.frame_only
+                },
+                &mesh_buffers,
+                if mode == ShadingMode::Wireframe {
+                    None
+                } else {
+                    Some(wgpu::Face::Back)
+                },
+                None,
+                true,
+                wgpu::CompareFunction::Less,
+            ),
+            ShaderKind::Grid => (
+                &layouts.frame_only,
+                &[],
+                None,
+                Some(wgpu::BlendState::ALPHA_BLENDING),
+                false,
+                wgpu::CompareFunction::LessEqual,
+            ),
+            ShaderKind::DebugLines => (
+                &layouts.frame_only,
+                &line_buffers,
+                None,
+                Some(wgpu::BlendState::ALPHA_BLENDING),
+                false,
+                wgpu::CompareFunction::LessEqual,
+            ),
+        };
+    device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
+        label: Some(key.kind.file()),
+        layout: Some(layout),
+        vertex: wgpu::VertexState {
+            module,
+            entry_point: Some("vs_main"),
+            compilation_options: wgpu::PipelineCompilationOptions::default(),
+            buffers,
+        },
+        primitive: wgpu::PrimitiveState {
+            topology: wgpu::PrimitiveTopology::TriangleList,
+            front_face: wgpu::FrontFace::Ccw,
+            cull_mode,
+            ..Default::default()
+        },
+        depth_stencil: Some(wgpu::DepthStencilState {
+            format: crate::DEPTH_FORMAT,
+            depth_write_enabled: Some(depth_write),
+            depth_compare: Some(depth_compare),
+            stencil: wgpu::StencilState::default(),
+            bias: wgpu::DepthBiasState::default(),
+        }),
+        multisample: wgpu::MultisampleState {
+            count: key.samples,
+            ..Default::default()
+        },
+        fragment: Some(wgpu::FragmentState {
+            module,
+            entry_point: Some("fs_main"),
+            compilation_options: wgpu::PipelineCompilationOptions::default(),
+            targets: &[Some(wgpu::ColorTargetState {
+                format: key.format,
+                blend,
+                write_mask: wgpu::ColorWrites::ALL,
+            })],
+        }),
+        multiview_mask: None,
+        cache: None,
+    })
+}
+
+impl PipelineLibrary {
+    /// Changes where shaders are read from (takes effect at the next reload).
+    pub(crate) fn set_source(&mut self, source: ShaderSource) {
+        self.source = source;
+    }
+
+    /// A pipeline already built by [`PipelineLibrary::get`].
+    pub(crate) fn cached(&self, key: &PipelineKey) -> Option<&wgpu::RenderPipeline> {
+        self.pipelines.get(key)
+    }
+}

@@ -1,0 +1,39 @@
+//! [`RenderTarget`]: what [`crate::Renderer::render`] draws into, an
+//! [`crate::OffscreenTarget`] or a [`crate::SurfaceTarget`].
+
+pub(crate) mod sealed {
+    use crate::gpu_context::GpuContext;
+    use crate::render_error::RenderError;
+
+    /// Views of one frame of a target.
+    #[derive(Debug)]
+    pub struct TargetFrame {
+        pub(crate) color: wgpu::TextureView,
+        pub(crate) depth: wgpu::TextureView,
+        pub(crate) msaa: Option<wgpu::TextureView>,
+        pub(crate) format: wgpu::TextureFormat,
+        pub(crate) samples: u32,
+        pub(crate) surface_texture: Option<wgpu::SurfaceTexture>,
+    }
+
+    /// The part of [`super::RenderTarget`] only this crate implements.
+    pub trait Sealed {
+        /// Prepares a frame with `samples` MSAA samples; `Ok(None)` skips the frame.
+        fn begin_frame(
+            &mut self,
+            gpu: &GpuContext,
+            samples: u32,
+        ) -> Result<Option<TargetFrame>, RenderError>;
+        /// Finishes a frame after its commands were submitted (presents a surface).
+        fn end_frame(&mut self, gpu: &GpuContext, frame: TargetFrame);
+    }
+}
+
+/// Something the renderer draws into. Implemented by [`crate::OffscreenTarget`] and
+/// [`crate::SurfaceTarget`] (sealed).
+pub trait RenderTarget: sealed::Sealed {
+    /// Size in pixels (0 × 0 for a minimised window).
+    fn size(&self) -> (u32, u32);
+    /// Colour format.
+    fn format(&self) -> wgpu::TextureFormat;
+}

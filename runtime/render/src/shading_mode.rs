@@ -1,0 +1,47 @@
+//! [`ShadingMode`]: how one object is shaded.
+
+/// How an object is shaded. Each mode is one WGSL file in the workspace `shaders/` folder.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub enum ShadingMode {
+    /// The material colour, flat, ignoring lights (`unlit.wgsl`).
+    Unlit,
+    /// Lit by ambient, sun and point lights, untextured (`lit_low.wgsl`).
+    LitLow,
+    /// Lit, albedo = material colour × texture (`lit.wgsl`). The default.
+    #[default]
+    Lit,
+    /// World-space normals as colour (`normal.wgsl`).
+    Normal,
+    /// Triangle edges in the material colour (`wireframe.wgsl`), drawn from barycentric
+    /// coordinates in the fragment shader rather than line primitives.
+    Wireframe,
+}
+
+impl ShadingMode {
+    /// Every mode, in a stable order.
+    pub const ALL: [ShadingMode; 5] = [
+        ShadingMode::Unlit,
+        ShadingMode::LitLow,
+        ShadingMode::Lit,
+        ShadingMode::Normal,
+        ShadingMode::Wireframe,
+    ];
+
+    /// File name of this mode's shader inside the shader folder.
+    #[must_use]
+    pub const fn shader_file(self) -> &'static str {
+        match self {
+            ShadingMode::Unlit => "unlit.wgsl",
+            ShadingMode::LitLow => "lit_low.wgsl",
+            ShadingMode::Lit => "lit.wgsl",
+            ShadingMode::Normal => "normal.wgsl",
+            ShadingMode::Wireframe => "wireframe.wgsl",
+        }
+    }
+
+    /// Whether this mode samples the material's texture.
+    #[must_use]
+    pub const fn uses_texture(self) -> bool {
+        matches!(self, ShadingMode::Lit)
+    }
+}
