@@ -2,11 +2,13 @@
 
 use abi_stable::std_types::{RResult, RVec};
 
-use crate::__ffi::{BlobFfi, BuiltinFfi, BuiltinId, HostRef, PluginOpFfi};
+use crate::__ffi::{BlobFfi, BuiltinFfi, BuiltinId, HostRef, PluginOpFfi, RayFfi};
 use crate::component::component_type::{decode, BundleParts};
+use crate::glam::Vec3;
+use crate::host::PhysicsCommand;
 use crate::{
-    BlobFormat, Bundle, Component, ComponentType, CtxError, Entity, EntityTransform, InputState,
-    LogLevel, Message, Time,
+    BlobFormat, Bundle, Component, ComponentType, CtxError, DebugLine, Entity, EntityTransform,
+    InputState, LogLevel, MeshId, Message, RayHit, TextureId, Time,
 };
 
 /// The host, as a plugin reaches it: the world, the clock, input, events and logging.
@@ -217,6 +219,78 @@ impl<'a> Ctx<'a> {
     pub fn unload_plugin(&mut self, name: &str) {
         self.host
             .request_plugin_op(PluginOpFfi::Unload, name.into())
+    }
+
+    // ----- rendering -----
+
+    /// Loads a model (OBJ + MTL) once per path, relative to the working directory, and
+    /// returns its mesh id for a [`MeshRenderer`](crate::MeshRenderer). A file that cannot be
+    /// loaded gives an error naming it; entities using the id are drawn with a visible
+    /// fallback (a magenta checker).
+    pub fn load_mesh(&mut self, path: &str) -> Result<MeshId, CtxError> {
+        ok(self.host.load_mesh(path.into()))
+    }
+
+    /// Loads an image (PNG, JPEG) once per path and returns its texture id.
+    pub fn load_texture(&mut self, path: &str) -> Result<TextureId, CtxError> {
+        ok(self.host.load_texture(path.into()))
+    }
+
+    /// Draws through the [`Camera`](crate::Camera) of `entity` from now on.
+    pub fn set_camera(&mut self, entity: Entity) -> Result<(), CtxError> {
+        ok(self.host.set_camera(entity))
+    }
+
+    /// Draws these line segments this frame (call each frame to keep them).
+    pub fn draw_debug_lines(&mut self, lines: &[DebugLine]) {
+        self.host.draw_debug_lines(lines.into())
+    }
+
+    // ----- physics -----
+
+    /// Pushes the body of `entity` with a force (newtons, world axes) during the next fixed
+    /// step. Forces add up and are cleared after each step.
+    pub fn apply_force(&mut self, entity: Entity, force: Vec3) -> Result<(), CtxError> {
+        self.physics(entity, PhysicsCommand::Force(force.to_array()))
+    }
+
+    /// Changes the momentum of the body of `entity` at once by `impulse` (N·s).
+    pub fn apply_impulse(&mut self, entity: Entity, impulse: Vec3) -> Result<(), CtxError> {
+        self.physics(entity, PhysicsCommand::Impulse(impulse.to_array()))
+    }
+
+    /// Twists the body of `entity` with a torque (N·m) during the next fixed step.
+    pub fn apply_torque(&mut self, entity: Entity, torque: Vec3) -> Result<(), CtxError> {
+        self.physics(entity, PhysicsCommand::Torque(torque.to_array()))
+    }
+
+    /// Sets the linear (m/s) and angular (rad/s) velocity of the body of `entity`.
+    pub fn set_velocity(
+        &mut self,
+        entity: Entity,
+        linear: Vec3,
+        angular: Vec3,
+    ) -> Result<(), CtxError> {
+        let command = PhysicsCommand::Velocity {
+            linear: linear.to_array(),
+            angular: angular.to_array(),
+        };
+        self.physics(entity, command)
+    }
+
+    /// The first collider hit by a ray from `origin` along `direction`, within
+    /// `max_distance` metres.
+    pub fn raycast(&mut self, origin: Vec3, direction: Vec3, max_distance: f32) -> Option<RayHit> {
+        let ray = RayFfi {
+            origin: origin.to_array(),
+            direction: direction.to_array(),
+            max_distance,
+        };
+        self.host.raycast(ray).into_option()
+    }
+
+    fn physics(&mut self, entity: Entity, command: PhysicsCommand) -> Result<(), CtxError> {
+        ok(self.host.physics_command(entity, command))
     }
 
     // ----- logging -----

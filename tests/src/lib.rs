@@ -129,3 +129,78 @@ impl Plugin for Recorder {
         self.note("on_detach");
     }
 }
+
+/// A channel difference above this (out of 255) makes a pixel count as different.
+pub const GOLDEN_CHANNEL_TOLERANCE: u8 = 12;
+/// Most pixels (share of the image) that may differ from the reference.
+pub const GOLDEN_MAX_DIFFERING: f64 = 0.005;
+
+/// Compares `image` with the reference `tests/golden/<name>.png`, under
+/// [`GOLDEN_CHANNEL_TOLERANCE`] and [`GOLDEN_MAX_DIFFERING`]. On failure writes
+/// `<name>-actual.png` and `<name>-diff.png` into `target/golden-failures/` and panics with
+/// the figures. `ONYX_UPDATE_GOLDEN=1` writes the reference instead (look at it before
+/// committing it).
+pub fn assert_golden(name: &str, image: &onyx_render::image::RgbaImage) {
+    use onyx_render::image::{Rgba, RgbaImage};
+    let reference = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("golden")
+        .join(format!("{name}.png"));
+    if std::env::var_os("ONYX_UPDATE_GOLDEN").is_some() {
+        std::fs::create_dir_all(reference.parent().expect("has a parent")).expect("golden dir");
+        image.save(&reference).expect("write golden");
+        eprintln!("updated {}", reference.display());
+        return;
+    }
+    let expected = onyx_render::image::open(&reference)
+        .unwrap_or_else(|e| {
+            panic!(
+                "no reference {}: {e} (ONYX_UPDATE_GOLDEN=1 makes it)",
+                reference.display()
+            )
+        })
+        .to_rgba8();
+    assert_eq!(
+        expected.dimensions(),
+        image.dimensions(),
+        "{name}: size differs"
+    );
+    let mut diff = RgbaImage::new(image.width(), image.height());
+    let mut differing = 0u64;
+    for (x, y, actual) in image.enumerate_pixels() {
+        let wanted = expected.get_pixel(x, y);
+        let off = actual
+            .0
+            .iter()
+            .zip(wanted.0)
+            .any(|(a, b)| a.abs_diff(b) > GOLDEN_CHANNEL_TOLERANCE);
+        if off {
+            differing += 1;
+        }
+        diff.put_pixel(
+            x,
+            y,
+            if off {
+                Rgba([255, 0, 255, 255])
+            } else {
+                Rgba([actual.0[0] / 3, actual.0[1] / 3, actual.0[2] / 3, 255])
+            },
+        );
+    }
+    let share = differing as f64 / f64::from(image.width() * image.height());
+    if share > GOLDEN_MAX_DIFFERING {
+        let out = target_dir().join("golden-failures");
+        std::fs::create_dir_all(&out).expect("failure dir");
+        let actual_path = out.join(format!("{name}-actual.png"));
+        let diff_path = out.join(format!("{name}-diff.png"));
+        image.save(&actual_path).expect("write actual");
+        diff.save(&diff_path).expect("write diff");
+        panic!(
+            "{name}: {:.2} % of pixels differ by more than {GOLDEN_CHANNEL_TOLERANCE}/255 (allowed {:.2} %); \
+             see {} and {}",
+            share * 100.0,
+            GOLDEN_MAX_DIFFERING * 100.0,
+            actual_path.display(),
+            diff_path.display()
+        );
+    }
+}

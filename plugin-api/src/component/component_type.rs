@@ -4,7 +4,10 @@
 use abi_stable::std_types::{RString, RVec};
 
 use crate::__ffi::{BlobFfi, BuiltinFfi, BuiltinId};
-use crate::{BlobFormat, Component, Ctx, CtxError, Entity, Name, Transform};
+use crate::{
+    BlobFormat, Camera, Collider, Component, Ctx, CtxError, Entity, Light, MeshRenderer, Name,
+    RigidBody, Transform,
+};
 
 /// A component type: built-in ([`Name`], [`Transform`], …) or plugin-defined ([`Component`]).
 /// Implemented by the SDK; you do not implement it yourself.
@@ -76,6 +79,11 @@ macro_rules! builtin {
 }
 
 builtin!(Name, |n: Name| BuiltinFfi::Name(RString::from(n.0)), BuiltinFfi::Name(n) => Name(n.into_string()));
+builtin!(MeshRenderer, BuiltinFfi::MeshRenderer, BuiltinFfi::MeshRenderer(v) => v);
+builtin!(Camera, BuiltinFfi::Camera, BuiltinFfi::Camera(v) => v);
+builtin!(Light, BuiltinFfi::Light, BuiltinFfi::Light(v) => v);
+builtin!(RigidBody, BuiltinFfi::RigidBody, BuiltinFfi::RigidBody(v) => v);
+builtin!(Collider, BuiltinFfi::Collider, BuiltinFfi::Collider(v) => v);
 builtin!(Transform, |t: Transform| BuiltinFfi::Transform(t.into()), BuiltinFfi::Transform(t) => t.into());
 
 pub(crate) fn encode<T: Component>(value: &T) -> Result<RVec<u8>, CtxError> {

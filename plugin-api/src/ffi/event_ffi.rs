@@ -5,7 +5,10 @@ use abi_stable::{
     StableAbi,
 };
 
-use crate::{CustomEvent, Event, InputEvent, Key, MouseButton, PlatformEvent, WindowEvent};
+use crate::{
+    CustomEvent, Entity, Event, GraphicsEvent, InputEvent, Key, MouseButton, PhysicsEvent,
+    PlatformEvent, WindowEvent,
+};
 
 #[repr(C, u8)]
 #[derive(StableAbi, Clone, Copy, Debug)]
@@ -58,6 +61,27 @@ pub enum EventFfi<'a> {
     },
     Error {
         message: RStr<'a>,
+    },
+    GpuError {
+        message: RStr<'a>,
+    },
+    DeviceLost {
+        message: RStr<'a>,
+    },
+    AssetFailed {
+        path: RStr<'a>,
+        message: RStr<'a>,
+    },
+    ContactStarted {
+        a: Entity,
+        b: Entity,
+        normal: [f32; 3],
+        point: [f32; 3],
+        impulse: f32,
+    },
+    ContactEnded {
+        a: Entity,
+        b: Entity,
     },
     Custom {
         name: RStr<'a>,
@@ -123,6 +147,34 @@ impl<'a> From<&'a Event> for EventFfi<'a> {
             Event::Platform(PlatformEvent::Error { message }) => EventFfi::Error {
                 message: message.as_str().into(),
             },
+            Event::Graphics(GraphicsEvent::Gpu { message }) => EventFfi::GpuError {
+                message: message.as_str().into(),
+            },
+            Event::Graphics(GraphicsEvent::DeviceLost { message }) => EventFfi::DeviceLost {
+                message: message.as_str().into(),
+            },
+            Event::Graphics(GraphicsEvent::AssetFailed { path, message }) => {
+                EventFfi::AssetFailed {
+                    path: path.as_str().into(),
+                    message: message.as_str().into(),
+                }
+            }
+            Event::Physics(PhysicsEvent::ContactStarted {
+                a,
+                b,
+                normal,
+                point,
+                impulse,
+            }) => EventFfi::ContactStarted {
+                a: *a,
+                b: *b,
+                normal: normal.to_array(),
+                point: point.to_array(),
+                impulse: *impulse,
+            },
+            Event::Physics(PhysicsEvent::ContactEnded { a, b }) => {
+                EventFfi::ContactEnded { a: *a, b: *b }
+            }
             Event::Custom(CustomEvent {
                 name,
                 sender,
@@ -188,6 +240,34 @@ impl From<EventFfi<'_>> for Event {
                 message: s(message),
             }
             .into(),
+            EventFfi::GpuError { message } => GraphicsEvent::Gpu {
+                message: s(message),
+            }
+            .into(),
+            EventFfi::DeviceLost { message } => GraphicsEvent::DeviceLost {
+                message: s(message),
+            }
+            .into(),
+            EventFfi::AssetFailed { path, message } => GraphicsEvent::AssetFailed {
+                path: s(path),
+                message: s(message),
+            }
+            .into(),
+            EventFfi::ContactStarted {
+                a,
+                b,
+                normal,
+                point,
+                impulse,
+            } => PhysicsEvent::ContactStarted {
+                a,
+                b,
+                normal: normal.into(),
+                point: point.into(),
+                impulse,
+            }
+            .into(),
+            EventFfi::ContactEnded { a, b } => PhysicsEvent::ContactEnded { a, b }.into(),
             EventFfi::Custom {
                 name,
                 sender,
@@ -247,6 +327,32 @@ mod tests {
             PlatformEvent::PluginUnloaded { plugin: "b".into() }.into(),
             PlatformEvent::Error {
                 message: "bad".into(),
+            }
+            .into(),
+            GraphicsEvent::Gpu {
+                message: "v".into(),
+            }
+            .into(),
+            GraphicsEvent::DeviceLost {
+                message: "l".into(),
+            }
+            .into(),
+            GraphicsEvent::AssetFailed {
+                path: "p".into(),
+                message: "m".into(),
+            }
+            .into(),
+            PhysicsEvent::ContactStarted {
+                a: Entity::from_bits(1),
+                b: Entity::from_bits(2),
+                normal: glam::Vec3::Y,
+                point: glam::Vec3::ONE,
+                impulse: 2.5,
+            }
+            .into(),
+            PhysicsEvent::ContactEnded {
+                a: Entity::from_bits(2),
+                b: Entity::from_bits(1),
             }
             .into(),
             CustomEvent {

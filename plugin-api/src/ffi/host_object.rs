@@ -10,12 +10,16 @@ use std::panic::{catch_unwind, AssertUnwindSafe};
 
 use abi_stable::{
     sabi_trait,
-    std_types::{RResult, RSlice, RSliceMut, RStr, RVec},
+    std_types::{ROption, RResult, RSlice, RSliceMut, RStr, RVec},
 };
 
 use super::{BlobFfi, BuiltinFfi, BuiltinId, CtxErrorFfi, EntityBlobFfi};
+use crate::host::PhysicsCommand;
 use crate::host::{HostServices, PluginRequest};
-use crate::{CtxError, Entity, EntityTransform, InputState, LogLevel, Time};
+use crate::{
+    CtxError, DebugLine, Entity, EntityTransform, InputState, LogLevel, MeshId, RayHit, TextureId,
+    Time,
+};
 
 #[sabi_trait]
 pub trait HostObject {
@@ -47,6 +51,28 @@ pub trait HostObject {
     fn set_transforms(&mut self, items: RSlice<'_, EntityTransform>) -> RResult<(), CtxErrorFfi>;
     fn send(&mut self, name: RStr<'_>, payload: RSlice<'_, u8>);
     fn request_plugin_op(&mut self, op: PluginOpFfi, argument: RStr<'_>);
+    fn load_mesh(&mut self, path: RStr<'_>) -> RResult<MeshId, CtxErrorFfi>;
+    fn load_texture(&mut self, path: RStr<'_>) -> RResult<TextureId, CtxErrorFfi>;
+    fn set_camera(&mut self, entity: Entity) -> RResult<(), CtxErrorFfi>;
+    fn draw_debug_lines(&mut self, lines: RSlice<'_, DebugLine>);
+    fn physics_command(
+        &mut self,
+        entity: Entity,
+        command: PhysicsCommand,
+    ) -> RResult<(), CtxErrorFfi>;
+    fn raycast(&mut self, ray: RayFfi) -> ROption<RayHit>;
+}
+
+/// A ray, as plain data.
+#[repr(C)]
+#[derive(abi_stable::StableAbi, Clone, Copy, Debug, PartialEq)]
+pub struct RayFfi {
+    /// Start, world space.
+    pub origin: [f32; 3],
+    /// Direction (need not be normalised).
+    pub direction: [f32; 3],
+    /// Longest distance, metres.
+    pub max_distance: f32,
 }
 
 /// What a plugin asks the host to do with plugins (after the frame).
@@ -226,6 +252,46 @@ impl<H: HostServices + ?Sized> HostObject for HostBridge<'_, H> {
             PluginOpFfi::Unload => PluginRequest::Unload(argument.as_str().to_owned()),
         };
         guard("request_plugin", || (), || self.0.request_plugin(request))
+    }
+
+    fn load_mesh(&mut self, path: RStr<'_>) -> RResult<MeshId, CtxErrorFfi> {
+        result("load_mesh", || self.0.load_mesh(path.as_str()))
+    }
+
+    fn load_texture(&mut self, path: RStr<'_>) -> RResult<TextureId, CtxErrorFfi> {
+        result("load_texture", || self.0.load_texture(path.as_str()))
+    }
+
+    fn set_camera(&mut self, entity: Entity) -> RResult<(), CtxErrorFfi> {
+        result("set_camera", || self.0.set_camera(entity))
+    }
+
+    fn draw_debug_lines(&mut self, lines: RSlice<'_, DebugLine>) {
+        guard(
+            "draw_debug_lines",
+            || (),
+            || self.0.draw_debug_lines(lines.as_slice()),
+        )
+    }
+
+    fn physics_command(
+        &mut self,
+        entity: Entity,
+        command: PhysicsCommand,
+    ) -> RResult<(), CtxErrorFfi> {
+        result("physics", || self.0.physics_command(entity, command))
+    }
+
+    fn raycast(&mut self, ray: RayFfi) -> ROption<RayHit> {
+        guard(
+            "raycast",
+            || ROption::RNone,
+            || {
+                self.0
+                    .raycast(ray.origin.into(), ray.direction.into(), ray.max_distance)
+                    .into()
+            },
+        )
     }
 }
 

@@ -22,7 +22,9 @@ pub use attach_info_ffi::AttachInfoFfi;
 pub use call_failure::{CallFailure, FailureKind};
 pub use ctx_error_ffi::{CtxErrorFfi, CtxErrorKind};
 pub use event_ffi::EventFfi;
-pub use host_object::{with_ctx, HostBridge, HostObject, HostObject_TO, HostRef, PluginOpFfi};
+pub use host_object::{
+    with_ctx, HostBridge, HostObject, HostObject_TO, HostRef, PluginOpFfi, RayFfi,
+};
 pub use plugin_object::{
     catch, new_plugin_box, PluginAdapter, PluginBox, PluginObject, PluginObject_TO,
 };

@@ -6,7 +6,9 @@ use abi_stable::{
 };
 
 use crate::host::{Blob, BuiltinValue};
-use crate::{BlobFormat, Entity, Name, Transform};
+use crate::{
+    BlobFormat, Camera, Collider, Entity, Light, MeshRenderer, Name, RigidBody, Transform,
+};
 
 /// Which built-in component a get or remove asks for.
 #[repr(u8)]
@@ -14,6 +16,11 @@ use crate::{BlobFormat, Entity, Name, Transform};
 pub enum BuiltinId {
     Name,
     Transform,
+    MeshRenderer,
+    Camera,
+    Light,
+    RigidBody,
+    Collider,
 }
 
 impl BuiltinId {
@@ -21,6 +28,11 @@ impl BuiltinId {
         match self {
             BuiltinId::Name => "Name",
             BuiltinId::Transform => "Transform",
+            BuiltinId::MeshRenderer => "MeshRenderer",
+            BuiltinId::Camera => "Camera",
+            BuiltinId::Light => "Light",
+            BuiltinId::RigidBody => "RigidBody",
+            BuiltinId::Collider => "Collider",
         }
     }
 }
@@ -54,6 +66,11 @@ impl From<TransformFfi> for Transform {
 pub enum BuiltinFfi {
     Name(RString),
     Transform(TransformFfi),
+    MeshRenderer(MeshRenderer),
+    Camera(Camera),
+    Light(Light),
+    RigidBody(RigidBody),
+    Collider(Collider),
 }
 
 impl From<BuiltinValue> for BuiltinFfi {
@@ -61,6 +78,11 @@ impl From<BuiltinValue> for BuiltinFfi {
         match value {
             BuiltinValue::Name(name) => BuiltinFfi::Name(name.0.into()),
             BuiltinValue::Transform(t) => BuiltinFfi::Transform(t.into()),
+            BuiltinValue::MeshRenderer(v) => BuiltinFfi::MeshRenderer(v),
+            BuiltinValue::Camera(v) => BuiltinFfi::Camera(v),
+            BuiltinValue::Light(v) => BuiltinFfi::Light(v),
+            BuiltinValue::RigidBody(v) => BuiltinFfi::RigidBody(v),
+            BuiltinValue::Collider(v) => BuiltinFfi::Collider(v),
         }
     }
 }
@@ -70,6 +92,11 @@ impl From<BuiltinFfi> for BuiltinValue {
         match value {
             BuiltinFfi::Name(name) => BuiltinValue::Name(Name(name.into_string())),
             BuiltinFfi::Transform(t) => BuiltinValue::Transform(t.into()),
+            BuiltinFfi::MeshRenderer(v) => BuiltinValue::MeshRenderer(v),
+            BuiltinFfi::Camera(v) => BuiltinValue::Camera(v),
+            BuiltinFfi::Light(v) => BuiltinValue::Light(v),
+            BuiltinFfi::RigidBody(v) => BuiltinValue::RigidBody(v),
+            BuiltinFfi::Collider(v) => BuiltinValue::Collider(v),
         }
     }
 }

@@ -1,7 +1,11 @@
 //! [`HostServices`]: what a host must provide to plugins, in plain Rust.
 
+use crate::glam::Vec3;
 use crate::host::{Blob, BuiltinId, BuiltinValue};
-use crate::{CtxError, Entity, EntityTransform, InputState, LogLevel, Time};
+use crate::{
+    CtxError, DebugLine, Entity, EntityTransform, InputState, LogLevel, MeshId, RayHit, TextureId,
+    Time,
+};
 
 /// The services behind [`Ctx`](crate::Ctx), implemented by the host for the duration of one
 /// plugin call. The SDK turns an implementation into the ABI-stable object that crosses
@@ -60,6 +64,37 @@ pub trait HostServices {
     fn send(&mut self, name: &str, payload: &[u8]);
     /// Queues a change to the set of plugins, carried out after the frame.
     fn request_plugin(&mut self, request: PluginRequest);
+    /// Loads (once per path) a model file and returns its mesh id.
+    fn load_mesh(&mut self, path: &str) -> Result<MeshId, CtxError>;
+    /// Loads (once per path) an image file and returns its texture id.
+    fn load_texture(&mut self, path: &str) -> Result<TextureId, CtxError>;
+    /// Draws through the camera of `entity`.
+    fn set_camera(&mut self, entity: Entity) -> Result<(), CtxError>;
+    /// Draws these lines this frame.
+    fn draw_debug_lines(&mut self, lines: &[DebugLine]);
+    /// Applies a force, impulse, torque or velocity to the body of `entity`.
+    fn physics_command(&mut self, entity: Entity, command: PhysicsCommand) -> Result<(), CtxError>;
+    /// The first collider along a ray, if any within `max_distance`.
+    fn raycast(&mut self, origin: Vec3, direction: Vec3, max_distance: f32) -> Option<RayHit>;
+}
+
+/// Something a plugin does to a body ([`Ctx::apply_force`](crate::Ctx::apply_force), …).
+#[repr(C, u8)]
+#[derive(abi_stable::StableAbi, Clone, Copy, Debug, PartialEq)]
+pub enum PhysicsCommand {
+    /// Add a force (N) at the centre of mass for the next fixed step.
+    Force([f32; 3]),
+    /// Add a torque (N·m) for the next fixed step.
+    Torque([f32; 3]),
+    /// Change the momentum at once by an impulse (N·s) at the centre of mass.
+    Impulse([f32; 3]),
+    /// Set linear (m/s) and angular (rad/s) velocity.
+    Velocity {
+        /// Linear velocity.
+        linear: [f32; 3],
+        /// Angular velocity.
+        angular: [f32; 3],
+    },
 }
 
 /// A change to the set of plugins that a plugin asked for (the editor's Plugins menu).

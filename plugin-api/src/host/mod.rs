@@ -19,7 +19,7 @@ pub use crate::__ffi::BuiltinId;
 pub use blob::Blob;
 pub use builtin_value::BuiltinValue;
 pub use call_error::CallError;
-pub use host_services::{HostServices, PluginRequest};
+pub use host_services::{HostServices, PhysicsCommand, PluginRequest};
 pub use library_error::LibraryError;
 pub use plugin_instance::PluginInstance;
 pub use plugin_library::PluginLibrary;

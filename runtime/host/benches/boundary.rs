@@ -152,7 +152,7 @@ fn median(runs: usize, iters: u32, mut f: impl FnMut()) -> Duration {
             for _ in 0..iters {
                 f();
             }
-            start.elapsed() / iters
+            start.elapsed().div_f64(f64::from(iters))
         })
         .collect();
     samples.sort();
@@ -164,7 +164,7 @@ fn summary() {
     let mut instance = PluginInstance::from_plugin("idle", Idle).expect("constructs");
     let abi = {
         let mut cx = CallContext::new(&mut state, "idle");
-        median(21, 100_000, || {
+        median(21, 1_000_000, || {
             black_box(instance.on_update(&mut cx, black_box(1.0 / 60.0)).ok());
         })
     };
@@ -172,7 +172,7 @@ fn summary() {
     let mut cx = CallContext::new(&mut state, "idle");
     let mut idle = Idle;
     let direct = with_ctx(&mut cx, |ctx| {
-        median(21, 100_000, || {
+        median(21, 1_000_000, || {
             black_box(black_box(&mut idle).on_update(ctx, black_box(1.0 / 60.0)));
         })
     });
@@ -205,7 +205,9 @@ fn summary() {
 
     println!("\n== boundary summary (median of repeated runs, this machine) ==");
     println!(
-        "one on_update call: {abi:.1?} through the ABI vs {direct:.1?} as a direct trait call ({:.0}x)",
+        "one on_update call: {:.2} ns through the ABI vs {:.2} ns as a direct trait call ({:.1}x)",
+        abi.as_secs_f64() * 1e9,
+        direct.as_secs_f64() * 1e9,
         ratio(abi, direct)
     );
     println!(

@@ -32,6 +32,8 @@ use crate::{FrameReport, Host, HostConfig};
 pub struct HeadlessHost {
     host: Host,
     frame_time: f64,
+    render: Option<crate::render::RenderSystem>,
+    render_settings: onyx_render::RenderSettings,
 }
 
 impl Default for HeadlessHost {
@@ -50,7 +52,15 @@ impl HeadlessHost {
     pub fn with_config(config: HostConfig) -> Self {
         let host = Host::new(config);
         let frame_time = host.clock_ref_fixed_delta();
-        Self { host, frame_time }
+        Self {
+            host,
+            frame_time,
+            render: None,
+            render_settings: onyx_render::RenderSettings {
+                shader_dir: crate::window::shader_dir(),
+                ..onyx_render::RenderSettings::deterministic()
+            },
+        }
     }
 
     /// Sets the simulated duration of each frame, seconds.
@@ -148,6 +158,35 @@ impl HeadlessHost {
     /// The host inside, mutably.
     pub fn host_mut(&mut self) -> &mut Host {
         &mut self.host
+    }
+
+    /// Sets the renderer settings used from the next renderer created (before the first
+    /// [`HeadlessHost::screenshot`]). Default: deterministic (MSAA off), shaders from the
+    /// source checkout's `shaders/` folder when there is one.
+    pub fn set_render_settings(&mut self, settings: onyx_render::RenderSettings) {
+        self.render_settings = settings;
+    }
+
+    /// Draws the world offscreen into a `width` × `height` image, creating a renderer on the
+    /// first call (on the adapter the environment names; Mesa's CPU Vulkan driver works).
+    /// Deterministic settings: MSAA off, so the same scene gives the same pixels.
+    pub fn screenshot(
+        &mut self,
+        width: u32,
+        height: u32,
+    ) -> Result<onyx_render::image::RgbaImage, crate::render::ScreenshotError> {
+        let system = match &mut self.render {
+            Some(system) => system,
+            None => {
+                let settings = self.render_settings.clone();
+                let mut system = crate::render::RenderSystem::new_headless(settings)?;
+                if let Err(error) = system.watch_shaders() {
+                    tracing::warn!("shader changes will not be picked up: {error}");
+                }
+                self.render.insert(system)
+            }
+        };
+        self.host.render_image(system, width, height)
     }
 
     /// Detaches every plugin (also done on drop).

@@ -44,8 +44,10 @@ pub struct Host {
 impl Host {
     /// A host with an empty world.
     pub fn new(config: HostConfig) -> Self {
+        let mut state = HostState::new(FixedClock::new(config.clock));
+        state.assets = crate::render::AssetRegistry::new(config.asset_root);
         Self {
-            state: HostState::new(FixedClock::new(config.clock)),
+            state,
             plugins: Vec::new(),
             plugin_settings: config.plugin_settings,
             search_path: config.search_path,
@@ -230,14 +232,24 @@ impl Host {
     pub fn frame(&mut self, real_dt: f64) -> FrameReport {
         self.init();
         self.poll_hot_reload();
+        self.state.debug_lines.clear();
         self.dispatch_events();
         let steps = self.state.clock.begin_frame(real_dt);
         for _ in 0..steps {
+            crate::render::previous_transform::snapshot(&mut self.state.world);
             for slot in &mut self.plugins {
                 slot.call(&mut self.state, Stage::FixedUpdate, |p, cx| {
                     p.on_fixed_update(cx)
                 });
             }
+            let dt = self.state.clock.fixed_delta() as f32;
+            let state = &mut self.state;
+            state.physics.step(
+                &mut state.world,
+                &state.assets,
+                dt,
+                &mut state.pending_events,
+            );
             self.state.clock.tick();
         }
         let dt = self.state.clock.time().delta;
@@ -254,6 +266,8 @@ impl Host {
         for slot in &mut self.plugins {
             slot.call(&mut self.state, Stage::DrawGui, |p, cx| p.draw_gui(cx));
         }
+        let input = self.state.input;
+        self.state.orbit.control(&input);
         self.state.input.end_frame();
         self.state.clock.end_frame();
         self.apply_plugin_requests();
@@ -337,8 +351,9 @@ impl Host {
     /// Spawns the entities of the scene file at `path` (added to what is there). On error
     /// the world is unchanged and the error is also raised as a platform event.
     pub fn load_scene(&mut self, path: &Path) -> Result<usize, SceneError> {
-        let loaded = scene::read_scene(path)
-            .and_then(|file| scene::spawn_scene(&mut self.state.world, &file, path));
+        let loaded = scene::read_scene(path).and_then(|file| {
+            scene::spawn_scene(&mut self.state.world, &mut self.state.assets, &file, path)
+        });
         match &loaded {
             Ok(n) => tracing::info!(path = %path.display(), entities = n, "loaded scene"),
             Err(error) => {
@@ -353,7 +368,54 @@ impl Host {
 
     /// Saves the world to `path` atomically.
     pub fn save_scene(&self, path: &Path) -> Result<(), SceneError> {
-        scene::write_scene(&scene::scene_from_world(&self.state.world), path)
+        scene::write_scene(
+            &scene::scene_from_world(&self.state.world, &self.state.assets),
+            path,
+        )
+    }
+
+    /// Draws the world into `target` with `system` (after [`Host::frame`]).
+    pub fn render(
+        &mut self,
+        system: &mut crate::render::RenderSystem,
+        target: &mut impl onyx_render::RenderTarget,
+    ) -> Result<onyx_render::RenderStats, onyx_render::RenderError> {
+        system.draw(&mut self.state, target)
+    }
+
+    /// Draws the world into a `width` × `height` image with `system`.
+    pub fn render_image(
+        &mut self,
+        system: &mut crate::render::RenderSystem,
+        width: u32,
+        height: u32,
+    ) -> Result<onyx_render::image::RgbaImage, crate::render::ScreenshotError> {
+        crate::render::render_image(system, &mut self.state, width, height)
+    }
+
+    /// The physics system (its settings, world and debug lines).
+    pub fn physics(&self) -> &crate::physics::PhysicsSystem {
+        &self.state.physics
+    }
+
+    /// The physics system, mutably (to tune its settings).
+    pub fn physics_mut(&mut self) -> &mut crate::physics::PhysicsSystem {
+        &mut self.state.physics
+    }
+
+    /// The mesh and texture ids handed out so far.
+    pub fn assets(&self) -> &crate::render::AssetRegistry {
+        &self.state.assets
+    }
+
+    /// Registers a model file (as `Ctx::load_mesh` does) and returns its id.
+    pub fn load_mesh(&mut self, path: &Path) -> onyx_plugin_api::MeshId {
+        self.state.assets.mesh(path)
+    }
+
+    /// Registers an image file (as `Ctx::load_texture` does) and returns its id.
+    pub fn load_texture(&mut self, path: &Path) -> onyx_plugin_api::TextureId {
+        self.state.assets.texture(path)
     }
 
     /// The state as JSON (see [`crate::state_dump`]).

@@ -12,6 +12,9 @@ pub struct HostConfig {
     pub plugin_settings: Vec<(String, String, String)>,
     /// Where plugins given by name are looked up.
     pub search_path: PluginSearchPath,
+    /// The folder relative model and texture paths start from (default: the working
+    /// directory).
+    pub asset_root: std::path::PathBuf,
 }
 
 impl Default for HostConfig {
@@ -20,6 +23,7 @@ impl Default for HostConfig {
             clock: ClockSettings::default(),
             plugin_settings: Vec::new(),
             search_path: PluginSearchPath::from_env(),
+            asset_root: std::path::PathBuf::new(),
         }
     }
 }
@@ -29,6 +33,13 @@ impl HostConfig {
     #[must_use]
     pub fn fixed_hz(mut self, hz: f64) -> Self {
         self.clock.fixed_hz = hz;
+        self
+    }
+
+    /// Returns this config with relative asset paths starting from `root`.
+    #[must_use]
+    pub fn asset_root(mut self, root: impl Into<std::path::PathBuf>) -> Self {
+        self.asset_root = root.into();
         self
     }
 

@@ -21,6 +21,8 @@
 //! - `world/`: the hecs world behind `Ctx` ([`CallContext`](world::CallContext)).
 //! - `scene/`: RON scene files, atomic saves.
 //! - `state_dump.rs`: the `--dump-state` JSON.
+//! - `physics/`: onyx-physics driven by `RigidBody`/`Collider` components in each fixed step.
+//! - `render/`: the world drawn with onyx-render (interpolated poses, cameras, lights, assets).
 //! - `window/`: the winit window and input mapping.
 
 #![warn(missing_docs)]
@@ -30,7 +32,9 @@ mod headless_host;
 mod host;
 mod host_config;
 mod host_reload;
+pub mod physics;
 pub mod plugins;
+pub mod render;
 pub mod scene;
 pub mod state_dump;
 pub mod window;

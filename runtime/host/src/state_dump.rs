@@ -1,7 +1,9 @@
 //! The `--dump-state` JSON: every entity with every component, and the plugins' status.
 
 use base64::Engine as _;
-use onyx_plugin_api::{BlobFormat, Name, Transform};
+use onyx_plugin_api::{
+    BlobFormat, Camera, Collider, Light, MeshRenderer, Name, RigidBody, Transform,
+};
 use serde_json::{json, Map, Value};
 
 use crate::plugins::{PluginSlot, PluginStatus};
@@ -38,6 +40,23 @@ pub fn dump_state(state: &HostState, plugins: &[PluginSlot]) -> Value {
             }
             if let Ok(t) = world.get::<&Transform>(e) {
                 components.insert("Transform".into(), transform_json(&t));
+            }
+            if let Ok(r) = world.get::<&MeshRenderer>(e) {
+                let scene = crate::scene::scene_mesh_renderer(&r, &state.assets);
+                components.insert("MeshRenderer".into(), json!(scene));
+            }
+            if let Ok(c) = world.get::<&Camera>(e) {
+                components.insert("Camera".into(), json!(*c));
+            }
+            if let Ok(l) = world.get::<&Light>(e) {
+                components.insert("Light".into(), json!(*l));
+            }
+            if let Ok(b) = world.get::<&RigidBody>(e) {
+                components.insert("RigidBody".into(), json!(*b));
+            }
+            if let Ok(c) = world.get::<&Collider>(e) {
+                let scene = crate::scene::scene_collider(&c, &state.assets);
+                components.insert("Collider".into(), json!(scene));
             }
             if let Ok(map) = world.get::<&PluginComponents>(e) {
                 for (key, blob) in &map.0 {

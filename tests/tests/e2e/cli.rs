@@ -260,3 +260,79 @@ fn a_window_opens_runs_frames_and_closes_cleanly_under_xvfb() {
         "on_detach ran: {err}"
     );
 }
+
+fn repo_root() -> std::path::PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("..")
+}
+
+fn showcase_screenshot(windowed: bool, path: &Path) -> Output {
+    let onyx = onyx_binary();
+    let mut args: Vec<String> = vec![
+        "run".into(),
+        "--plugin".into(),
+        "showcase".into(),
+        "--frames".into(),
+        "30".into(),
+        "--size".into(),
+        "320x200".into(),
+        "--screenshot".into(),
+        path.display().to_string(),
+    ];
+    let mut command = if windowed {
+        let mut c = Command::new("/usr/bin/xvfb-run");
+        c.args(["-a", "-s", "-screen 0 1280x720x24"]).arg(onyx);
+        c
+    } else {
+        args.insert(1, "--headless".into());
+        Command::new(onyx)
+    };
+    command
+        .args(&args)
+        .current_dir(repo_root())
+        .env("ONYX_PLUGIN_PATH", target_dir())
+        .env_remove("WAYLAND_DISPLAY")
+        .env("RUST_LOG", "warn")
+        .output()
+        .expect("onyx runs")
+}
+
+#[test]
+fn a_headless_screenshot_matches_the_showcase_reference() {
+    let dir = tempfile::tempdir().unwrap();
+    let png = dir.path().join("shot.png");
+    let out = showcase_screenshot(false, &png);
+    assert!(out.status.success(), "{}", stderr(&out));
+    let image = onyx_render::image::open(&png).unwrap().to_rgba8();
+    onyx_tests::assert_golden("showcase", &image);
+}
+
+#[test]
+fn a_windowed_run_draws_the_scene_and_screenshots_it() {
+    let dir = tempfile::tempdir().unwrap();
+    let png = dir.path().join("window.png");
+    let out = showcase_screenshot(true, &png);
+    assert!(out.status.success(), "{}", stderr(&out));
+    assert!(
+        stderr(&out).is_empty() || !stderr(&out).contains("rendering disabled"),
+        "{}",
+        stderr(&out)
+    );
+    let image = onyx_render::image::open(&png).unwrap().to_rgba8();
+    assert_eq!(image.dimensions(), (320, 200));
+    // The window's renderer uses MSAA, the reference does not: compare on average.
+    let reference =
+        onyx_render::image::open(Path::new(env!("CARGO_MANIFEST_DIR")).join("golden/showcase.png"))
+            .unwrap()
+            .to_rgba8();
+    let total: u64 = image
+        .as_raw()
+        .iter()
+        .zip(reference.as_raw())
+        .map(|(a, b)| u64::from(a.abs_diff(*b)))
+        .sum();
+    let mean = total as f64 / image.as_raw().len() as f64;
+    assert!(
+        mean < 4.0,
+        "the windowed screenshot differs from the reference by {mean:.2}/255 on average"
+    );
+}

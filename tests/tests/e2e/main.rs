@@ -3,8 +3,11 @@
 
 mod cli;
 mod ctx_api;
+mod dev_loop;
 mod faults;
 mod lifecycle;
 mod loading;
+mod physics;
 mod reload;
+mod render;
 mod scenes;

@@ -32,7 +32,8 @@ struct WatchedFile {
 /// reports each file once its new content is complete and differs from what was loaded.
 pub struct LibraryWatcher {
     watcher: notify::RecommendedWatcher,
-    events: Receiver<notify::Result<notify::Event>>,
+    /// Events, stamped with when they happened (not when they were read).
+    events: Receiver<(Instant, notify::Result<notify::Event>)>,
     files: HashMap<PathBuf, WatchedFile>,
     dirs: HashMap<PathBuf, usize>,
 }
@@ -54,7 +55,7 @@ impl LibraryWatcher {
     pub fn new() -> notify::Result<Self> {
         let (tx, events) = channel();
         let watcher = notify::recommended_watcher(move |event| {
-            let _ = tx.send(event);
+            let _ = tx.send((Instant::now(), event));
         })?;
         Ok(Self {
             watcher,
@@ -106,14 +107,14 @@ impl LibraryWatcher {
     /// twice, new content). Call it once per frame.
     pub fn poll(&mut self) -> Vec<PathBuf> {
         let now = Instant::now();
-        while let Ok(event) = self.events.try_recv() {
+        while let Ok((at, event)) = self.events.try_recv() {
             let Ok(event) = event else { continue };
             if matches!(event.kind, notify::EventKind::Access(_)) {
                 continue;
             }
             for path in event.paths {
                 if let Some(file) = self.files.get_mut(&path) {
-                    file.dirty_since = Some(now);
+                    file.dirty_since = Some(file.dirty_since.map_or(at, |d| d.max(at)));
                     file.len = None;
                 }
             }

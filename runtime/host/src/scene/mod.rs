@@ -9,7 +9,11 @@ mod scene_file;
 mod scene_io;
 
 pub use scene_error::SceneError;
-pub use scene_file::{SceneComponent, SceneEntity, SceneFile, SCENE_FORMAT_VERSION};
+pub use scene_file::{
+    SceneCollider, SceneComponent, SceneEntity, SceneFile, SceneMeshRenderer, SceneShape,
+    SCENE_FORMAT_VERSION,
+};
 pub use scene_io::{
-    parse_scene, read_scene, scene_from_world, spawn_scene, write_atomically, write_scene,
+    parse_scene, read_scene, scene_collider, scene_from_world, scene_mesh_renderer, spawn_scene,
+    write_atomically, write_scene,
 };

@@ -9,4 +9,4 @@ mod windowed_runner;
 pub mod winit_input;
 
 pub use window_error::WindowError;
-pub use windowed_runner::{run_windowed, WindowOptions, WindowedSummary};
+pub use windowed_runner::{run_windowed, shader_dir, WindowOptions, WindowedSummary};

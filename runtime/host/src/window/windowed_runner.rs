@@ -1,6 +1,9 @@
 //! [`run_windowed`]: drives a [`Host`] from a winit window.
 
+use std::sync::Arc;
 use std::time::{Duration, Instant};
+
+use onyx_render::{GpuContext, RenderSettings, Renderer, SurfaceTarget};
 
 use onyx_plugin_api::{InputEvent, WindowEvent as OnyxWindowEvent};
 use winit::application::ApplicationHandler;
@@ -12,6 +15,7 @@ use winit::window::{Window, WindowId};
 
 use super::winit_input::{key_event, map_button, scroll_event};
 use super::WindowError;
+use crate::render::RenderSystem;
 use crate::Host;
 
 /// How the window is opened and how long it runs.
@@ -23,8 +27,10 @@ pub struct WindowOptions {
     pub size: (u32, u32),
     /// Stop after this many frames (`None`: until closed or a plugin quits).
     pub frames: Option<u64>,
-    /// Frames per second the loop aims for (without a renderer there is no vsync to pace it).
+    /// Frames per second the loop aims for (on top of vsync, and without a renderer).
     pub target_fps: f64,
+    /// Wait for the display's refresh before presenting.
+    pub vsync: bool,
 }
 
 impl Default for WindowOptions {
@@ -34,23 +40,65 @@ impl Default for WindowOptions {
             size: (1280, 720),
             frames: None,
             target_fps: 60.0,
+            vsync: true,
         }
     }
 }
 
 /// What a windowed run did.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+#[derive(Debug, Default)]
 pub struct WindowedSummary {
     /// Frames run.
     pub frames: u64,
     /// Last size of the window's drawable area.
     pub final_size: (u32, u32),
+    /// The renderer the window drew with (`None` when rendering was unavailable), kept for
+    /// a final offscreen screenshot.
+    pub render: Option<RenderSystem>,
+}
+
+/// A renderer drawing into the window's surface.
+struct WindowGraphics {
+    system: RenderSystem,
+    target: SurfaceTarget,
+}
+
+fn window_graphics(window: Arc<Window>, vsync: bool) -> Result<WindowGraphics, String> {
+    let size = window.inner_size();
+    let instance = GpuContext::create_instance();
+    let surface = instance
+        .create_surface(window)
+        .map_err(|e| format!("no surface for the window: {e}"))?;
+    let gpu = GpuContext::from_instance(instance, Some(&surface)).map_err(|e| e.to_string())?;
+    let settings = RenderSettings {
+        shader_dir: shader_dir(),
+        ..RenderSettings::default()
+    };
+    let renderer = Renderer::new(gpu, settings).map_err(|e| e.to_string())?;
+    let target = SurfaceTarget::new(renderer.gpu(), surface, size.width, size.height, vsync)
+        .map_err(|e| e.to_string())?;
+    let mut system = RenderSystem::new(renderer);
+    if let Err(error) = system.watch_shaders() {
+        tracing::warn!("shader changes will not be picked up: {error}");
+    }
+    Ok(WindowGraphics { system, target })
+}
+
+/// The `shaders/` folder of a source checkout, when the binary runs from one (so shaders can
+/// be edited and reloaded); otherwise the copies embedded in the binary are used.
+pub fn shader_dir() -> Option<std::path::PathBuf> {
+    if let Some(dir) = std::env::var_os("ONYX_SHADER_DIR") {
+        return Some(dir.into());
+    }
+    let dev = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../../shaders");
+    (cfg!(debug_assertions) && dev.is_dir()).then_some(dev)
 }
 
 struct App<'h> {
     host: &'h mut Host,
     options: WindowOptions,
-    window: Option<Window>,
+    window: Option<Arc<Window>>,
+    graphics: Option<WindowGraphics>,
     error: Option<WindowError>,
     last_frame: Option<Instant>,
     next_frame: Instant,
@@ -58,7 +106,8 @@ struct App<'h> {
 }
 
 /// Opens a window and runs `host` in it until a plugin quits, the window is closed, or
-/// `options.frames` frames have run. F5 reloads every plugin loaded from a file. Must be called on the main thread, once per process
+/// `options.frames` frames have run. F5 reloads every plugin loaded from a file; F3 toggles
+/// physics debug lines. Must be called on the main thread, once per process
 /// (winit allows one event loop).
 pub fn run_windowed(
     host: &mut Host,
@@ -69,6 +118,7 @@ pub fn run_windowed(
         host,
         options,
         window: None,
+        graphics: None,
         error: None,
         last_frame: None,
         next_frame: Instant::now(),
@@ -77,6 +127,7 @@ pub fn run_windowed(
     event_loop
         .run_app(&mut app)
         .map_err(WindowError::EventLoop)?;
+    app.summary.render = app.graphics.take().map(|g| g.system);
     match app.error {
         Some(error) => Err(error),
         None => Ok(app.summary),
@@ -96,6 +147,11 @@ impl App<'_> {
             .unwrap_or(1.0 / self.options.target_fps.max(1.0));
         self.last_frame = Some(now);
         let report = self.host.frame(dt);
+        if let Some(graphics) = &mut self.graphics {
+            if let Err(error) = self.host.render(&mut graphics.system, &mut graphics.target) {
+                tracing::error!("frame not drawn: {error}");
+            }
+        }
         self.summary.frames += 1;
         let done = self
             .options
@@ -118,6 +174,17 @@ impl ApplicationHandler for App<'_> {
             .with_inner_size(PhysicalSize::new(w.max(1), h.max(1)));
         match event_loop.create_window(attributes) {
             Ok(window) => {
+                let window = Arc::new(window);
+                match window_graphics(window.clone(), self.options.vsync) {
+                    Ok(graphics) => {
+                        let info = graphics.system.renderer().gpu().adapter_info();
+                        tracing::info!(adapter = %info.name, backend = ?info.backend, "drawing into the window");
+                        self.graphics = Some(graphics);
+                    }
+                    Err(error) => {
+                        tracing::warn!("rendering disabled, the window stays empty: {error}")
+                    }
+                }
                 let size = window.inner_size();
                 tracing::info!(width = size.width, height = size.height, "window opened");
                 self.summary.final_size = (size.width, size.height);
@@ -145,6 +212,10 @@ impl ApplicationHandler for App<'_> {
             }
             WindowEvent::Resized(size) => {
                 self.summary.final_size = (size.width, size.height);
+                if let Some(graphics) = &mut self.graphics {
+                    let gpu = graphics.system.renderer().gpu();
+                    graphics.target.resize(gpu, size.width, size.height);
+                }
                 self.host.push_event(OnyxWindowEvent::Resized {
                     width: size.width,
                     height: size.height,
@@ -160,6 +231,14 @@ impl ApplicationHandler for App<'_> {
                 {
                     tracing::info!("F5: reloading every plugin loaded from a file");
                     self.host.reload_all();
+                }
+                if event.physical_key == PhysicalKey::Code(KeyCode::F3)
+                    && event.state.is_pressed()
+                    && !event.repeat
+                {
+                    if let Some(graphics) = &mut self.graphics {
+                        graphics.system.physics_debug = !graphics.system.physics_debug;
+                    }
                 }
                 self.host
                     .push_event(key_event(event.physical_key, event.state, event.repeat));
@@ -213,6 +292,5 @@ impl ApplicationHandler for App<'_> {
 
     fn exiting(&mut self, _: &ActiveEventLoop) {
         tracing::info!(frames = self.summary.frames, "window closed");
-        self.window = None;
     }
 }

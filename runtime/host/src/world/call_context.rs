@@ -1,14 +1,19 @@
 //! [`CallContext`]: serves one plugin call — the host's implementation of `HostServices`.
 
-use onyx_plugin_api::host::{Blob, BuiltinId, BuiltinValue, HostServices, PluginRequest};
+use onyx_plugin_api::glam::Vec3;
+use onyx_plugin_api::host::{
+    Blob, BuiltinId, BuiltinValue, HostServices, PhysicsCommand, PluginRequest,
+};
 use onyx_plugin_api::{
-    CtxError, CustomEvent, Entity, EntityTransform, Event, InputState, LogLevel, Name, Time,
-    Transform,
+    Camera, Collider, CtxError, CustomEvent, DebugLine, Entity, EntityTransform, Event, InputState,
+    Light, LogLevel, MeshId, MeshRenderer, Name, RayHit, RigidBody, TextureId, Time, Transform,
 };
 
 use super::entity_id::{to_api, to_hecs};
 use super::{PluginComponents, StoredBlob};
 use crate::clock::FixedClock;
+use crate::physics::PhysicsSystem;
+use crate::render::{AssetRegistry, OrbitCamera};
 
 /// The parts of the host a plugin call can reach (everything but the plugins themselves).
 pub struct HostState {
@@ -24,6 +29,16 @@ pub struct HostState {
     pub quit_requested: bool,
     /// Plugin changes asked for during the frame, carried out after it.
     pub plugin_requests: Vec<PluginRequest>,
+    /// Mesh and texture ids ↔ files.
+    pub assets: AssetRegistry,
+    /// Debug lines plugins drew this frame.
+    pub debug_lines: Vec<DebugLine>,
+    /// The camera entity chosen with `Ctx::set_camera`.
+    pub camera_override: Option<Entity>,
+    /// The view used when no camera is chosen or active.
+    pub orbit: OrbitCamera,
+    /// Rigid-body physics.
+    pub physics: PhysicsSystem,
     entity_buffer: Vec<Entity>,
     transform_buffer: Vec<EntityTransform>,
 }
@@ -38,6 +53,11 @@ impl HostState {
             pending_events: Vec::new(),
             quit_requested: false,
             plugin_requests: Vec::new(),
+            assets: AssetRegistry::default(),
+            debug_lines: Vec::new(),
+            camera_override: None,
+            orbit: OrbitCamera::default(),
+            physics: PhysicsSystem::default(),
             entity_buffer: Vec::new(),
             transform_buffer: Vec::new(),
         }
@@ -62,12 +82,61 @@ impl<'a> CallContext<'a> {
             .ok_or(CtxError::NoSuchEntity { entity })
     }
 
-    fn validate(entity: Entity, value: &BuiltinValue) -> Result<(), CtxError> {
+    fn validate(&self, entity: Entity, value: &BuiltinValue) -> Result<(), CtxError> {
+        let non_finite = |component: &str| CtxError::NonFinite {
+            entity,
+            component: component.into(),
+        };
+        let invalid = |message: String| Err(CtxError::Invalid { message });
         match value {
-            BuiltinValue::Transform(t) if !t.is_finite() => Err(CtxError::NonFinite {
-                entity,
-                component: "Transform".into(),
-            }),
+            BuiltinValue::Transform(t) if !t.is_finite() => Err(non_finite("Transform")),
+            BuiltinValue::MeshRenderer(r) => {
+                if !r.material.color.iter().all(|c| c.is_finite()) {
+                    return Err(non_finite("MeshRenderer"));
+                }
+                if !self.state.assets.knows_mesh(r.mesh) {
+                    return invalid(format!("mesh id {} was not given by this host", r.mesh.0));
+                }
+                if !self.state.assets.knows_texture(r.material.texture) {
+                    return invalid(format!(
+                        "texture id {} was not given by this host",
+                        r.material.texture.0
+                    ));
+                }
+                Ok(())
+            }
+            BuiltinValue::Camera(c) => {
+                let extent = match c.projection {
+                    onyx_plugin_api::Projection::Perspective { fov_y } => fov_y,
+                    onyx_plugin_api::Projection::Orthographic { height } => height,
+                };
+                if !(c.near.is_finite() && c.far.is_finite() && extent.is_finite()) {
+                    return Err(non_finite("Camera"));
+                }
+                if !(c.near > 0.0 && c.far > c.near && extent > 0.0) {
+                    return invalid(format!(
+                        "a camera needs 0 < near < far and a positive field of view or height \
+                         (near {}, far {}, {extent})",
+                        c.near, c.far
+                    ));
+                }
+                Ok(())
+            }
+            BuiltinValue::Light(l) if !l.is_finite() => Err(non_finite("Light")),
+            BuiltinValue::RigidBody(b) if !b.is_finite() => Err(non_finite("RigidBody")),
+            BuiltinValue::RigidBody(b) if b.mass < 0.0 => invalid(format!("a body's mass must be ≥ 0, got {}", b.mass)),
+            BuiltinValue::Collider(c) if !c.is_valid() => invalid(
+                "a collider needs finite values, positive sizes and non-negative density and friction".into(),
+            ),
+            BuiltinValue::Collider(c) => match c.shape {
+                onyx_plugin_api::ColliderShape::ConvexHull { mesh }
+                | onyx_plugin_api::ColliderShape::TriMesh { mesh }
+                    if self.state.assets.mesh_path(mesh).is_none() =>
+                {
+                    invalid(format!("a mesh collider needs a model from load_mesh, not mesh id {}", mesh.0))
+                }
+                _ => Ok(()),
+            },
             _ => Ok(()),
         }
     }
@@ -77,6 +146,11 @@ impl<'a> CallContext<'a> {
         let _ = match value {
             BuiltinValue::Name(name) => self.state.world.insert_one(e, name),
             BuiltinValue::Transform(t) => self.state.world.insert_one(e, t),
+            BuiltinValue::MeshRenderer(r) => self.state.world.insert_one(e, r),
+            BuiltinValue::Camera(c) => self.state.world.insert_one(e, c),
+            BuiltinValue::Light(l) => self.state.world.insert_one(e, l),
+            BuiltinValue::RigidBody(b) => self.state.world.insert_one(e, b),
+            BuiltinValue::Collider(c) => self.state.world.insert_one(e, c),
             _ => Ok(()),
         };
     }
@@ -95,7 +169,22 @@ impl<'a> CallContext<'a> {
     }
 
     fn write_transforms(world: &mut hecs::World, items: &[EntityTransform]) {
+        // Fast path: `items` is usually the buffer `transforms()` filled from this same query,
+        // in the same order; write it back in one pass. Any mismatch falls back to lookups.
+        let query = world.query_mut::<(hecs::Entity, &mut Transform)>();
+        let mut rows = query.into_iter();
+        let mut written = 0;
         for item in items {
+            match rows.next() {
+                Some((e, t)) if to_api(e) == item.entity => {
+                    *t = item.transform;
+                    written += 1;
+                }
+                _ => break,
+            }
+        }
+        drop(rows);
+        for item in &items[written..] {
             let Some(e) = to_hecs(item.entity) else {
                 continue;
             };
@@ -165,7 +254,7 @@ impl HostServices for CallContext<'_> {
     fn spawn(&mut self, builtins: Vec<BuiltinValue>, blobs: Vec<Blob>) -> Result<Entity, CtxError> {
         let placeholder = Entity::from_bits(0);
         for value in &builtins {
-            Self::validate(placeholder, value)?;
+            self.validate(placeholder, value)?;
         }
         let e = self.state.world.spawn(());
         for value in builtins {
@@ -211,12 +300,32 @@ impl HostServices for CallContext<'_> {
                 .get::<&Transform>(e)
                 .map(|t| BuiltinValue::Transform(*t))
                 .map_err(|_| missing(entity, id.name())),
+            BuiltinId::MeshRenderer => world
+                .get::<&MeshRenderer>(e)
+                .map(|v| BuiltinValue::MeshRenderer(*v))
+                .map_err(|_| missing(entity, id.name())),
+            BuiltinId::Camera => world
+                .get::<&Camera>(e)
+                .map(|v| BuiltinValue::Camera(*v))
+                .map_err(|_| missing(entity, id.name())),
+            BuiltinId::Light => world
+                .get::<&Light>(e)
+                .map(|v| BuiltinValue::Light(*v))
+                .map_err(|_| missing(entity, id.name())),
+            BuiltinId::RigidBody => world
+                .get::<&RigidBody>(e)
+                .map(|v| BuiltinValue::RigidBody(*v))
+                .map_err(|_| missing(entity, id.name())),
+            BuiltinId::Collider => world
+                .get::<&Collider>(e)
+                .map(|v| BuiltinValue::Collider(*v))
+                .map_err(|_| missing(entity, id.name())),
         }
     }
 
     fn set_builtin(&mut self, entity: Entity, value: BuiltinValue) -> Result<(), CtxError> {
         let e = self.entity(entity)?;
-        Self::validate(entity, &value)?;
+        self.validate(entity, &value)?;
         self.insert_builtin(e, value);
         Ok(())
     }
@@ -227,6 +336,11 @@ impl HostServices for CallContext<'_> {
         let removed = match id {
             BuiltinId::Name => world.remove_one::<Name>(e).is_ok(),
             BuiltinId::Transform => world.remove_one::<Transform>(e).is_ok(),
+            BuiltinId::MeshRenderer => world.remove_one::<MeshRenderer>(e).is_ok(),
+            BuiltinId::Camera => world.remove_one::<Camera>(e).is_ok(),
+            BuiltinId::Light => world.remove_one::<Light>(e).is_ok(),
+            BuiltinId::RigidBody => world.remove_one::<RigidBody>(e).is_ok(),
+            BuiltinId::Collider => world.remove_one::<Collider>(e).is_ok(),
         };
         if removed {
             Ok(())
@@ -358,5 +472,55 @@ impl HostServices for CallContext<'_> {
     fn request_plugin(&mut self, request: PluginRequest) {
         tracing::debug!(plugin = self.plugin, ?request, "plugin change requested");
         self.state.plugin_requests.push(request);
+    }
+
+    fn load_mesh(&mut self, path: &str) -> Result<MeshId, CtxError> {
+        if path.is_empty() {
+            return Err(CtxError::Invalid {
+                message: "load_mesh needs a file path".into(),
+            });
+        }
+        Ok(self.state.assets.mesh(std::path::Path::new(path)))
+    }
+
+    fn load_texture(&mut self, path: &str) -> Result<TextureId, CtxError> {
+        if path.is_empty() {
+            return Err(CtxError::Invalid {
+                message: "load_texture needs a file path".into(),
+            });
+        }
+        Ok(self.state.assets.texture(std::path::Path::new(path)))
+    }
+
+    fn set_camera(&mut self, entity: Entity) -> Result<(), CtxError> {
+        let e = self.entity(entity)?;
+        if self.state.world.get::<&Camera>(e).is_err() {
+            return Err(missing(entity, "Camera"));
+        }
+        self.state.camera_override = Some(entity);
+        Ok(())
+    }
+
+    fn draw_debug_lines(&mut self, lines: &[DebugLine]) {
+        self.state.debug_lines.extend(
+            lines
+                .iter()
+                .filter(|l| l.start.is_finite() && l.end.is_finite()),
+        );
+    }
+
+    fn physics_command(&mut self, entity: Entity, command: PhysicsCommand) -> Result<(), CtxError> {
+        let e = self.entity(entity)?;
+        if self.state.world.get::<&Collider>(e).is_err() {
+            return Err(missing(entity, "Collider"));
+        }
+        self.state
+            .physics
+            .command(entity, command)
+            .map_err(|message| CtxError::Invalid { message })
+    }
+
+    fn raycast(&mut self, origin: Vec3, direction: Vec3, max_distance: f32) -> Option<RayHit> {
+        self.state.physics.raycast(origin, direction, max_distance)
     }
 }

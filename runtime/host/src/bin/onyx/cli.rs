@@ -20,6 +20,10 @@ pub enum Command {
     Run(RunArgs),
     /// Show the plugin search path and the plugin libraries found in it.
     Plugins,
+    /// Create a new plugin crate, ready to build, test and run.
+    NewPlugin(NewPluginArgs),
+    /// Build plugin crates, run them, and rebuild + hot-reload them as their sources change.
+    Dev(DevArgs),
 }
 
 /// `onyx run`.
@@ -61,7 +65,80 @@ pub struct RunArgs {
     /// After the last frame, save the world as a scene file (written atomically).
     #[arg(long, value_name = "FILE")]
     pub save_scene: Option<PathBuf>,
+    /// After the last frame, render the world offscreen at --size and save it as a PNG
+    /// (windowed or headless; headless needs a GPU or Mesa's CPU Vulkan driver).
+    #[arg(long, value_name = "FILE.png")]
+    pub screenshot: Option<PathBuf>,
     /// A setting for a plugin, read in its on_attach (repeatable): `hello.quit_after=10`.
+    #[arg(long = "set", value_name = "PLUGIN.KEY=VALUE", value_parser = parse_setting)]
+    pub settings: Vec<(String, String, String)>,
+    /// Window (and screenshot) size in pixels.
+    #[arg(long, value_name = "WxH", default_value = "1280x720", value_parser = parse_size)]
+    pub size: (u32, u32),
+}
+
+/// `onyx new-plugin`.
+#[derive(Args, Debug)]
+#[command(after_help = "\
+The crate depends on this Onyx checkout's onyx-plugin-api (and, for its tests, on
+onyx-runtime) by absolute path: the checkout `onyx` was built from, or $ONYX_SOURCE_DIR
+when set (the root of an Onyx repository). Its Cargo.lock starts as a copy of the
+checkout's, so the plugin builds against the dependency versions the host was built with.
+It has its own [workspace] table, so it builds wherever it is.
+
+EXIT STATUS
+  0 when the crate was created; 2 when NAME is not a valid crate name, DIR/NAME exists
+  and is not empty, or the files cannot be written. The reason is printed on one line.")]
+pub struct NewPluginArgs {
+    /// The crate's name (letters, digits, `-` and `_`, starting with a letter).
+    #[arg(value_name = "NAME")]
+    pub name: String,
+    /// Directory to create the crate in (as DIR/NAME).
+    #[arg(long, value_name = "DIR", default_value = ".")]
+    pub path: PathBuf,
+}
+
+/// `onyx dev`.
+#[derive(Args, Debug)]
+#[command(after_help = "\
+THE DEV LOOP
+  Each crate is built with `cargo build` (the compiler's messages are shown as usual) and its
+  cdylib is loaded. Then its src/ directory, Cargo.toml and build.rs are watched: after a
+  change (and 200 ms without another), the crate is rebuilt in the background while frames
+  go on, one build per crate at a time (a change during a build starts another after it).
+  When the library file has been rewritten, the host reloads the plugin at the start of a
+  frame: save_state -> load_state into the new build, the world untouched. A build that fails
+  prints the compiler's errors; the previous build keeps running. Builds honour
+  CARGO_TARGET_DIR and the crate's own cargo configuration.
+
+EXIT STATUS
+  0 when the run ends (window closed, a plugin quit, --frames reached); 1 if a plugin is
+  faulted at the end; 2 if it could not start (a first build failed, a crate has no cdylib,
+  a plugin or scene failed to load, no display). The reason is printed on one line.")]
+pub struct DevArgs {
+    /// A plugin crate's directory (repeatable): built, loaded, rebuilt and reloaded on change.
+    #[arg(long = "plugin-crate", value_name = "DIR", required = true)]
+    pub plugin_crates: Vec<PathBuf>,
+    /// Also load this prebuilt plugin (a path or NAME, as for `onyx run`; repeatable). It is
+    /// reloaded when its file changes, but not built.
+    #[arg(long = "plugin", value_name = "PATH|NAME")]
+    pub plugins: Vec<String>,
+    /// A scene file (RON) to load before the first frame.
+    #[arg(long, value_name = "FILE")]
+    pub scene: Option<PathBuf>,
+    /// Run without a window, in real time (about 60 frames per second).
+    #[arg(long)]
+    pub headless: bool,
+    /// Stop after N frames (without it: until the window is closed or a plugin quits).
+    #[arg(long, value_name = "N")]
+    pub frames: Option<u64>,
+    /// Fixed simulation steps per second.
+    #[arg(long, value_name = "HZ", default_value_t = 60.0)]
+    pub fixed_hz: f64,
+    /// Most fixed steps per frame (the spiral-of-death guard).
+    #[arg(long, value_name = "N", default_value_t = 8)]
+    pub max_steps: u32,
+    /// A setting for a plugin, read in its on_attach (repeatable): `my_plugin.speed=2`.
     #[arg(long = "set", value_name = "PLUGIN.KEY=VALUE", value_parser = parse_setting)]
     pub settings: Vec<(String, String, String)>,
     /// Window size in pixels.

@@ -1,15 +1,19 @@
 //! `onyx`: the command line of the Onyx host.
 
 mod cli;
+mod dev;
+mod new_plugin;
 
 use std::process::ExitCode;
 
 use anyhow::Context as _;
 use clap::Parser;
+use onyx_render::RenderSettings;
 use onyx_runtime::clock::ClockSettings;
 use onyx_runtime::plugins::{plugin_search, PluginSearchPath};
+use onyx_runtime::render::{save_png, RenderSystem};
 use onyx_runtime::scene::write_atomically;
-use onyx_runtime::window::{run_windowed, WindowOptions};
+use onyx_runtime::window::{run_windowed, shader_dir, WindowOptions};
 use onyx_runtime::{Host, HostConfig, PluginStatus};
 
 use cli::{Cli, Command, RunArgs};
@@ -36,6 +40,8 @@ fn main() -> ExitCode {
             list_plugins();
             Ok(())
         }
+        Command::NewPlugin(args) => new_plugin::new_plugin(args),
+        Command::Dev(args) => dev::dev(args),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,
@@ -50,17 +56,42 @@ fn main() -> ExitCode {
     }
 }
 
-fn run(args: RunArgs) -> Result<(), Failure> {
-    let config = HostConfig {
+/// The host configuration of `onyx run` and `onyx dev`.
+fn host_config(fixed_hz: f64, max_steps: u32, settings: &[(String, String, String)]) -> HostConfig {
+    HostConfig {
         clock: ClockSettings {
-            fixed_hz: args.fixed_hz,
-            max_steps_per_frame: args.max_steps,
+            fixed_hz,
+            max_steps_per_frame: max_steps,
             ..Default::default()
         },
-        plugin_settings: args.settings.clone(),
+        plugin_settings: settings.to_vec(),
         search_path: PluginSearchPath::from_env(),
-    };
-    let mut host = Host::new(config);
+        // Relative model and texture paths start from the working directory.
+        asset_root: Default::default(),
+    }
+}
+
+/// `Err(Failure::Run)` naming every faulted plugin, if any.
+fn check_faults(host: &Host) -> Result<(), Failure> {
+    let faults: Vec<String> = host
+        .plugins()
+        .iter()
+        .filter_map(|p| match p.status() {
+            PluginStatus::Faulted { stage, message } => Some(format!(
+                "plugin `{}` faulted in {stage}: {message}",
+                p.name()
+            )),
+            PluginStatus::Running => None,
+        })
+        .collect();
+    if !faults.is_empty() {
+        return Err(Failure::Run(anyhow::anyhow!(faults.join("; "))));
+    }
+    Ok(())
+}
+
+fn run(args: RunArgs) -> Result<(), Failure> {
+    let mut host = Host::new(host_config(args.fixed_hz, args.max_steps, &args.settings));
     for spec in &args.plugins {
         host.load_plugin(spec)
             .map_err(|e| Failure::Start(anyhow::Error::new(e)))?;
@@ -70,7 +101,7 @@ fn run(args: RunArgs) -> Result<(), Failure> {
             .map_err(|e| Failure::Start(anyhow::Error::new(e)))?;
     }
 
-    let frames = if args.headless {
+    let (frames, render) = if args.headless {
         let dt = 1.0 / args.fixed_hz;
         let mut frames = 0u64;
         while args.frames.is_none_or(|n| frames < n) {
@@ -79,17 +110,20 @@ fn run(args: RunArgs) -> Result<(), Failure> {
                 break;
             }
         }
-        frames
+        (frames, None)
     } else {
         let options = WindowOptions {
             size: args.size,
             frames: args.frames,
             ..Default::default()
         };
-        run_windowed(&mut host, options)
-            .map_err(|e| Failure::Start(anyhow::Error::new(e)))?
-            .frames
+        let summary =
+            run_windowed(&mut host, options).map_err(|e| Failure::Start(anyhow::Error::new(e)))?;
+        (summary.frames, summary.render)
     };
+    if let Some(path) = &args.screenshot {
+        screenshot(&mut host, render, args.size, path).map_err(Failure::Run)?;
+    }
     host.shutdown();
     tracing::info!(frames, ticks = host.time().ticks, "run finished");
 
@@ -105,20 +139,29 @@ fn run(args: RunArgs) -> Result<(), Failure> {
         host.save_scene(path)
             .map_err(|e| Failure::Run(anyhow::Error::new(e)))?;
     }
-    let faults: Vec<String> = host
-        .plugins()
-        .iter()
-        .filter_map(|p| match p.status() {
-            PluginStatus::Faulted { stage, message } => Some(format!(
-                "plugin `{}` faulted in {stage}: {message}",
-                p.name()
-            )),
-            PluginStatus::Running => None,
-        })
-        .collect();
-    if !faults.is_empty() {
-        return Err(Failure::Run(anyhow::anyhow!(faults.join("; "))));
-    }
+    check_faults(&host)
+}
+
+/// Renders the world offscreen (with the window's renderer when there was one) and saves it.
+fn screenshot(
+    host: &mut Host,
+    render: Option<RenderSystem>,
+    (width, height): (u32, u32),
+    path: &std::path::Path,
+) -> anyhow::Result<()> {
+    let mut system = match render {
+        Some(system) => system,
+        None => {
+            let settings = RenderSettings {
+                shader_dir: shader_dir(),
+                ..RenderSettings::deterministic()
+            };
+            RenderSystem::new_headless(settings)?
+        }
+    };
+    let image = host.render_image(&mut system, width, height)?;
+    save_png(&image, path)?;
+    tracing::info!(path = %path.display(), width, height, "screenshot saved");
     Ok(())
 }
 

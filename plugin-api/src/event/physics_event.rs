@@ -1,0 +1,31 @@
+//! [`PhysicsEvent`]: events whose source is the physics engine.
+
+use glam::Vec3;
+
+use crate::Entity;
+
+/// Two colliders started or stopped touching. Every start is followed by one end.
+#[derive(Clone, Copy, Debug, PartialEq)]
+#[non_exhaustive]
+pub enum PhysicsEvent {
+    /// `a` and `b` started touching.
+    ContactStarted {
+        /// First entity (the normal points away from it).
+        a: Entity,
+        /// Second entity.
+        b: Entity,
+        /// Contact normal from `a` to `b`.
+        normal: Vec3,
+        /// A contact point, world space.
+        point: Vec3,
+        /// Normal impulse of the step it started in, N·s.
+        impulse: f32,
+    },
+    /// `a` and `b` stopped touching (or one of them was removed).
+    ContactEnded {
+        /// First entity.
+        a: Entity,
+        /// Second entity.
+        b: Entity,
+    },
+}

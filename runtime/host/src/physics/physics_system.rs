@@ -1,0 +1,411 @@
+//! [`PhysicsSystem`]: onyx-physics driven by `RigidBody` and `Collider` components.
+
+use std::collections::HashMap;
+
+use onyx_physics::glam::Vec3;
+use onyx_physics::{
+    BodyHandle, ColliderDesc, ContactEventKind, MassProperties, PhysicsSettings, PhysicsWorld,
+    Pose, QueryFilter, RigidBodyDesc,
+};
+use onyx_plugin_api::host::PhysicsCommand;
+use onyx_plugin_api::{
+    BodyKind, Collider, ColliderShape, Entity, Event, GraphicsEvent, PhysicsEvent, PlatformEvent,
+    RayHit, RigidBody, Transform,
+};
+
+use crate::render::AssetRegistry;
+use crate::world::entity_id::{to_api, to_hecs};
+
+/// What the host keeps per simulated entity.
+#[derive(Clone, Debug)]
+struct Link {
+    body: BodyHandle,
+    /// The components the body was built from: a change rebuilds it.
+    built_from: (Option<RigidBody>, Collider),
+    /// The transform and velocities written back after the last step: a difference means
+    /// the user moved the entity.
+    written: Transform,
+    written_velocity: (Vec3, Vec3),
+}
+
+/// The physics world behind the components. Empty scenes cost nothing: with no collider in
+/// the world, a step does no work.
+pub struct PhysicsSystem {
+    world: PhysicsWorld,
+    links: HashMap<hecs::Entity, Link>,
+    entity_of: HashMap<BodyHandle, hecs::Entity>,
+    /// Bodies removed since the last step, whose "contact ended" events arrive with it.
+    departed: HashMap<BodyHandle, hecs::Entity>,
+    commands: Vec<(Entity, PhysicsCommand)>,
+}
+
+impl std::fmt::Debug for PhysicsSystem {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("PhysicsSystem")
+            .field("bodies", &self.links.len())
+            .finish()
+    }
+}
+
+impl Default for PhysicsSystem {
+    fn default() -> Self {
+        Self::new(PhysicsSettings::default())
+    }
+}
+
+fn body_desc(rb: Option<&RigidBody>, t: &Transform) -> RigidBodyDesc {
+    let pose_desc = |d: RigidBodyDesc| d.translation(t.translation).rotation(t.rotation);
+    let Some(rb) = rb else {
+        return pose_desc(RigidBodyDesc::fixed());
+    };
+    let desc = match rb.kind {
+        BodyKind::Dynamic => RigidBodyDesc::dynamic(),
+        BodyKind::Kinematic => RigidBodyDesc::kinematic(),
+        BodyKind::Static => RigidBodyDesc::fixed(),
+    };
+    pose_desc(desc)
+        .linvel(rb.linear_velocity)
+        .angvel(rb.angular_velocity)
+        .gravity_scale(rb.gravity_scale)
+        .linear_damping(rb.linear_damping)
+        .angular_damping(rb.angular_damping)
+        .locked_axes(onyx_physics::LockedAxes(rb.locked_axes.0))
+        .ccd_enabled(rb.ccd)
+        .can_sleep(rb.can_sleep)
+}
+
+impl PhysicsSystem {
+    /// A physics system with `settings` (the host sets `dt` to its fixed step).
+    pub fn new(settings: PhysicsSettings) -> Self {
+        Self {
+            world: PhysicsWorld::new(settings),
+            links: HashMap::new(),
+            entity_of: HashMap::new(),
+            departed: HashMap::new(),
+            commands: Vec::new(),
+        }
+    }
+
+    /// The physics world (read-only: the components drive it).
+    pub fn world(&self) -> &PhysicsWorld {
+        &self.world
+    }
+
+    /// The settings, to tune accuracy and cost.
+    pub fn settings_mut(&mut self) -> &mut PhysicsSettings {
+        self.world.settings_mut()
+    }
+
+    /// Queues a force, torque, impulse or velocity for `entity`'s body, applied before the
+    /// next step. Fails if the entity has no body.
+    pub fn command(&mut self, entity: Entity, command: PhysicsCommand) -> Result<(), String> {
+        let finite = match command {
+            PhysicsCommand::Force(v) | PhysicsCommand::Torque(v) | PhysicsCommand::Impulse(v) => {
+                v.iter().all(|x| x.is_finite())
+            }
+            PhysicsCommand::Velocity { linear, angular } => {
+                linear.iter().chain(&angular).all(|x| x.is_finite())
+            }
+        };
+        if !finite {
+            return Err("a force, torque, impulse or velocity holds NaN or infinity".into());
+        }
+        self.commands.push((entity, command));
+        Ok(())
+    }
+
+    /// The first collider along a ray.
+    pub fn raycast(&self, origin: Vec3, direction: Vec3, max_distance: f32) -> Option<RayHit> {
+        let length = direction.length();
+        if !(length.is_finite() && length > 0.0 && origin.is_finite() && max_distance >= 0.0) {
+            return None;
+        }
+        let hit = self.world.cast_ray(
+            origin,
+            direction / length,
+            max_distance,
+            &QueryFilter::default(),
+        )?;
+        let entity = self.entity_of.get(&hit.body)?;
+        Some(RayHit {
+            entity: to_api(*entity),
+            point: hit.point,
+            normal: hit.normal,
+            distance: hit.toi,
+        })
+    }
+
+    /// Debug outlines of colliders, contact points and normals.
+    pub fn debug_lines(&self) -> Vec<onyx_plugin_api::DebugLine> {
+        self.world
+            .debug_lines()
+            .into_iter()
+            .map(|l| onyx_plugin_api::DebugLine::new(l.a, l.b, l.color))
+            .collect()
+    }
+
+    /// One fixed step of `dt` seconds: components → bodies, queued commands, the step, then
+    /// poses and state back into the components and contacts into `events`.
+    pub fn step(
+        &mut self,
+        world: &mut hecs::World,
+        assets: &AssetRegistry,
+        dt: f32,
+        events: &mut Vec<Event>,
+    ) {
+        self.sync(world, assets, events);
+        if self.links.is_empty() && self.departed.is_empty() {
+            self.commands.clear();
+            return;
+        }
+        self.apply_commands(events);
+        self.world.settings_mut().dt = dt;
+        let output = self.world.step().clone();
+        for handle in &output.quarantined {
+            if let Some(e) = self.entity_of.get(handle) {
+                events.push(Event::Platform(PlatformEvent::Error {
+                    message: format!(
+                        "entity {} went non-finite in physics and was frozen (rolled back, disabled)",
+                        to_api(*e)
+                    ),
+                }));
+            }
+        }
+        let entity = |h: &BodyHandle| self.entity_of.get(h).or_else(|| self.departed.get(h));
+        for contact in &output.events {
+            let (Some(a), Some(b)) = (entity(&contact.body_a), entity(&contact.body_b)) else {
+                continue;
+            };
+            let (a, b) = (to_api(*a), to_api(*b));
+            events.push(Event::Physics(match contact.kind {
+                ContactEventKind::Started => PhysicsEvent::ContactStarted {
+                    a,
+                    b,
+                    normal: contact.normal,
+                    point: contact.points.first().copied().unwrap_or(Vec3::ZERO),
+                    impulse: contact.impulse,
+                },
+                ContactEventKind::Ended => PhysicsEvent::ContactEnded { a, b },
+            }));
+        }
+        self.departed.clear();
+        self.write_back(world);
+    }
+
+    fn collider_desc(
+        collider: &Collider,
+        assets: &AssetRegistry,
+        entity: Entity,
+    ) -> Result<ColliderDesc, String> {
+        let desc = match collider.shape {
+            ColliderShape::Sphere { radius } => ColliderDesc::sphere(radius),
+            ColliderShape::Box {
+                half_extents: [x, y, z],
+            } => ColliderDesc::cuboid(x, y, z),
+            ColliderShape::Capsule {
+                half_height,
+                radius,
+            } => ColliderDesc::capsule(half_height, radius),
+            ColliderShape::Plane => ColliderDesc::half_space(Vec3::Y),
+            ColliderShape::ConvexHull { mesh } | ColliderShape::TriMesh { mesh } => {
+                let path = assets.mesh_path(mesh).ok_or_else(|| {
+                    format!(
+                        "entity {entity}: a mesh collider needs a loaded model, not mesh id {}",
+                        mesh.0
+                    )
+                })?;
+                let data = onyx_render::mesh::load_obj_geometry(&assets.resolve(path))
+                    .map_err(|e| format!("entity {entity}: {e}"))?;
+                let points: Vec<Vec3> = data
+                    .vertices
+                    .iter()
+                    .map(|v| Vec3::from(v.position))
+                    .collect();
+                if matches!(collider.shape, ColliderShape::ConvexHull { .. }) {
+                    ColliderDesc::convex_hull(&points)
+                        .map_err(|e| format!("entity {entity}: {e}"))?
+                } else {
+                    let triangles = data
+                        .indices
+                        .chunks_exact(3)
+                        .map(|t| [t[0], t[1], t[2]])
+                        .collect();
+                    ColliderDesc::trimesh(points, triangles)
+                        .map_err(|e| format!("entity {entity}: {e}"))?
+                }
+            }
+        };
+        Ok(desc
+            .translation(Vec3::from(collider.offset))
+            .density(collider.density)
+            .restitution(collider.restitution)
+            .static_friction(collider.static_friction)
+            .dynamic_friction(collider.friction))
+    }
+
+    fn sync(&mut self, world: &mut hecs::World, assets: &AssetRegistry, events: &mut Vec<Event>) {
+        // Bodies whose entity or components are gone.
+        let stale: Vec<hecs::Entity> = self
+            .links
+            .keys()
+            .filter(|e| {
+                world.get::<&Collider>(**e).is_err() || world.get::<&Transform>(**e).is_err()
+            })
+            .copied()
+            .collect();
+        for e in stale {
+            self.remove(e);
+        }
+        let rows: Vec<(hecs::Entity, Transform, Collider, Option<RigidBody>)> = world
+            .query::<(hecs::Entity, &Transform, &Collider, Option<&RigidBody>)>()
+            .iter()
+            .map(|(e, t, c, rb)| (e, *t, *c, rb.copied()))
+            .collect();
+        for (e, t, collider, rb) in rows {
+            let rebuild = self
+                .links
+                .get(&e)
+                .is_none_or(|link| link.built_from != (rb.map(config_only), collider));
+            let _ = &collider;
+            if rebuild {
+                self.remove(e);
+                let built = Self::collider_desc(&collider, assets, to_api(e))
+                    .map(|desc| self.build(e, &t, rb.as_ref(), collider, desc));
+                if let Err(message) = built {
+                    events.push(Event::Graphics(GraphicsEvent::AssetFailed {
+                        path: String::new(),
+                        message: format!("collider not created: {message}"),
+                    }));
+                }
+                continue;
+            }
+            let Some(link) = self.links.get_mut(&e) else {
+                continue;
+            };
+            let Some(body) = self.world.body_mut(link.body) else {
+                continue;
+            };
+            if t.translation != link.written.translation || t.rotation != link.written.rotation {
+                let pose = Pose {
+                    translation: t.translation,
+                    rotation: t.rotation,
+                };
+                if rb.is_some_and(|rb| rb.kind == BodyKind::Kinematic) {
+                    body.set_next_kinematic_pose(pose);
+                } else {
+                    body.set_pose(pose);
+                }
+            }
+            if let Some(rb) = rb {
+                if (rb.linear_velocity, rb.angular_velocity) != link.written_velocity {
+                    body.set_linvel(rb.linear_velocity);
+                    body.set_angvel(rb.angular_velocity);
+                }
+            }
+        }
+    }
+
+    fn build(
+        &mut self,
+        e: hecs::Entity,
+        t: &Transform,
+        rb: Option<&RigidBody>,
+        collider: Collider,
+        desc: ColliderDesc,
+    ) {
+        let body = self.world.insert_body(body_desc(rb, t));
+        let _ = self.world.insert_collider(desc, body);
+        if let (Some(rb), Some(b)) = (rb, self.world.body_mut(body)) {
+            let mp = *b.mass_properties();
+            if rb.mass > 0.0 && mp.mass > 0.0 {
+                let k = rb.mass / mp.mass;
+                // Same shape of inertia, scaled to the requested mass.
+                b.set_mass_properties(Some(MassProperties {
+                    mass: rb.mass,
+                    local_com: mp.local_com,
+                    inertia: mp.inertia * k,
+                }));
+            }
+        }
+        self.entity_of.insert(body, e);
+        self.links.insert(
+            e,
+            Link {
+                body,
+                built_from: (rb.copied().map(config_only), collider),
+                written: *t,
+                written_velocity: rb.map_or((Vec3::ZERO, Vec3::ZERO), |rb| {
+                    (rb.linear_velocity, rb.angular_velocity)
+                }),
+            },
+        );
+    }
+
+    fn remove(&mut self, e: hecs::Entity) {
+        if let Some(link) = self.links.remove(&e) {
+            self.world.remove_body(link.body);
+            self.entity_of.remove(&link.body);
+            self.departed.insert(link.body, e);
+        }
+    }
+
+    fn apply_commands(&mut self, events: &mut Vec<Event>) {
+        for (entity, command) in std::mem::take(&mut self.commands) {
+            let body = to_hecs(entity)
+                .and_then(|e| self.links.get(&e))
+                .and_then(|link| self.world.body_mut(link.body));
+            let Some(body) = body else {
+                events.push(Event::Platform(PlatformEvent::Error {
+                    message: format!(
+                        "entity {entity} has no physics body; its force or impulse was dropped"
+                    ),
+                }));
+                continue;
+            };
+            match command {
+                PhysicsCommand::Force(f) => body.add_force(f.into()),
+                PhysicsCommand::Torque(t) => body.add_torque(t.into()),
+                PhysicsCommand::Impulse(j) => body.apply_impulse(j.into()),
+                PhysicsCommand::Velocity { linear, angular } => {
+                    body.set_linvel(linear.into());
+                    body.set_angvel(angular.into());
+                }
+            }
+        }
+    }
+
+    fn write_back(&mut self, world: &mut hecs::World) {
+        for (e, link) in &mut self.links {
+            let Some(body) = self.world.body(link.body) else {
+                continue;
+            };
+            let Ok((t, rb)) = world.query_one_mut::<(&mut Transform, Option<&mut RigidBody>)>(*e)
+            else {
+                continue;
+            };
+            t.translation = body.translation();
+            t.rotation = body.rotation();
+            link.written = *t;
+            if let Some(rb) = rb {
+                rb.linear_velocity = body.linvel();
+                rb.angular_velocity = body.angvel();
+                rb.sleeping = body.is_sleeping();
+                rb.grounded = body.is_grounded();
+                rb.contact_normal = body.last_contact_normal().unwrap_or(Vec3::ZERO);
+                link.written_velocity = (rb.linear_velocity, rb.angular_velocity);
+            }
+        }
+    }
+}
+
+/// The part of a `RigidBody` the user sets (not the state the host writes back).
+fn config_only(rb: RigidBody) -> RigidBody {
+    RigidBody {
+        linear_velocity: Vec3::ZERO,
+        angular_velocity: Vec3::ZERO,
+        sleeping: false,
+        grounded: false,
+        contact_normal: Vec3::ZERO,
+        ..rb
+    }
+}

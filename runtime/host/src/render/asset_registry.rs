@@ -1,0 +1,99 @@
+//! [`AssetRegistry`]: which file each mesh and texture id stands for.
+
+use std::collections::HashMap;
+use std::path::{Path, PathBuf};
+
+use onyx_plugin_api::{MeshId, TextureId};
+
+/// Ids for model and texture files, one per path, valid for the life of the host. It holds
+/// no GPU data: a host without a renderer still hands out ids (so plugins and scenes behave
+/// the same headless), and the renderer loads each file the first time it is drawn.
+#[derive(Debug, Default)]
+pub struct AssetRegistry {
+    root: PathBuf,
+    meshes: Vec<PathBuf>,
+    mesh_ids: HashMap<PathBuf, MeshId>,
+    textures: Vec<PathBuf>,
+    texture_ids: HashMap<PathBuf, TextureId>,
+}
+
+impl AssetRegistry {
+    /// A registry resolving relative paths against `root` (the asset root).
+    pub fn new(root: PathBuf) -> Self {
+        Self {
+            root,
+            ..Self::default()
+        }
+    }
+
+    /// Where the file named `path` is: relative paths are taken from the asset root. Paths are
+    /// registered as written, so scene files keep them portable.
+    pub fn resolve(&self, path: &Path) -> PathBuf {
+        self.root.join(path)
+    }
+
+    /// The id of the model at `path`, registering it if new.
+    pub fn mesh(&mut self, path: &Path) -> MeshId {
+        if let Some(id) = self.mesh_ids.get(path) {
+            return *id;
+        }
+        let id = MeshId(MeshId::FIRST_LOADED + self.meshes.len() as u32);
+        self.meshes.push(path.to_path_buf());
+        self.mesh_ids.insert(path.to_path_buf(), id);
+        id
+    }
+
+    /// The id of the image at `path`, registering it if new.
+    pub fn texture(&mut self, path: &Path) -> TextureId {
+        if let Some(id) = self.texture_ids.get(path) {
+            return *id;
+        }
+        let id = TextureId(1 + self.textures.len() as u32);
+        self.textures.push(path.to_path_buf());
+        self.texture_ids.insert(path.to_path_buf(), id);
+        id
+    }
+
+    /// The file of a loaded-model id (`None` for built-in shapes and unknown ids).
+    pub fn mesh_path(&self, id: MeshId) -> Option<&Path> {
+        let index = id.0.checked_sub(MeshId::FIRST_LOADED)?;
+        self.meshes.get(index as usize).map(PathBuf::as_path)
+    }
+
+    /// The file of a texture id.
+    pub fn texture_path(&self, id: TextureId) -> Option<&Path> {
+        let index = id.0.checked_sub(1)?;
+        self.textures.get(index as usize).map(PathBuf::as_path)
+    }
+
+    /// Whether `id` is a built-in shape or a registered model.
+    pub fn knows_mesh(&self, id: MeshId) -> bool {
+        MeshId::BUILTIN.iter().any(|(b, _)| *b == id) || self.mesh_path(id).is_some()
+    }
+
+    /// Whether `id` is none or a registered texture.
+    pub fn knows_texture(&self, id: TextureId) -> bool {
+        id == TextureId::NONE || self.texture_path(id).is_some()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn one_id_per_path_and_back() {
+        let mut r = AssetRegistry::default();
+        let a = r.mesh(Path::new("a.obj"));
+        assert_eq!(r.mesh(Path::new("a.obj")), a);
+        let b = r.mesh(Path::new("b.obj"));
+        assert_ne!(a, b);
+        assert_eq!(r.mesh_path(b), Some(Path::new("b.obj")));
+        assert_eq!(r.mesh_path(MeshId::CUBE), None);
+        assert!(r.knows_mesh(MeshId::SPHERE) && r.knows_mesh(a) && !r.knows_mesh(MeshId(999)));
+        let t = r.texture(Path::new("t.png"));
+        assert_ne!(t, TextureId::NONE);
+        assert_eq!(r.texture_path(t), Some(Path::new("t.png")));
+        assert!(r.knows_texture(TextureId::NONE) && !r.knows_texture(TextureId(77)));
+    }
+}
