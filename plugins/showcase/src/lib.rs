@@ -139,7 +139,7 @@ impl Showcase {
         }
 
         let spot = ctx.load_mesh("assets/models/spot/spot_triangulated.obj")?;
-        let pose = Transform::from_xyz(0.0, 0.72, -3.2).with_rotation(Quat::from_rotation_y(2.5));
+        let pose = Transform::from_xyz(-4.0, 0.72, -2.2).with_rotation(Quat::from_rotation_y(2.2));
         let look = MeshRenderer::new(spot).with_material(Material::color(1.0, 1.0, 1.0));
         ctx.spawn((Name::new("spot"), pose, look))?;
         Ok(())

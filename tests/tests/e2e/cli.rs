@@ -231,6 +231,7 @@ fn a_window_opens_runs_frames_and_closes_cleanly_under_xvfb() {
             "20",
             "--size",
             "640x360",
+            "--no-vsync",
             "--dump-state",
         ])
         .arg(&dump_path)

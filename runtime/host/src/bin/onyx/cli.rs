@@ -75,6 +75,9 @@ pub struct RunArgs {
     /// Window (and screenshot) size in pixels.
     #[arg(long, value_name = "WxH", default_value = "1280x720", value_parser = parse_size)]
     pub size: (u32, u32),
+    /// Present frames as soon as they are drawn instead of waiting for the display's refresh.
+    #[arg(long)]
+    pub no_vsync: bool,
 }
 
 /// `onyx new-plugin`.

@@ -115,6 +115,7 @@ fn run(args: RunArgs) -> Result<(), Failure> {
         let options = WindowOptions {
             size: args.size,
             frames: args.frames,
+            vsync: !args.no_vsync,
             ..Default::default()
         };
         let summary =
