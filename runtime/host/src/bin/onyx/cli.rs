@@ -41,24 +41,9 @@ EXIT STATUS
   0 on a clean run; 1 if a plugin faulted during the run; 2 if the run could not start
   (a plugin or scene failed to load, no display). The reason is printed on one line.")]
 pub struct RunArgs {
-    /// A plugin to load: a library path or a NAME (repeatable; loaded in order).
-    #[arg(long = "plugin", value_name = "PATH|NAME")]
-    pub plugins: Vec<String>,
-    /// A scene file (RON) to load before the first frame.
-    #[arg(long, value_name = "FILE")]
-    pub scene: Option<PathBuf>,
-    /// Run without a window (and without a GPU), as fast as possible.
-    #[arg(long)]
-    pub headless: bool,
-    /// Stop after N frames (headless without --frames runs until a plugin quits).
-    #[arg(long, value_name = "N")]
-    pub frames: Option<u64>,
-    /// Fixed simulation steps per second.
-    #[arg(long, value_name = "HZ", default_value_t = 60.0)]
-    pub fixed_hz: f64,
-    /// Most fixed steps per frame (the spiral-of-death guard).
-    #[arg(long, value_name = "N", default_value_t = 8)]
-    pub max_steps: u32,
+    /// What to run and how (shared with `onyx dev`).
+    #[command(flatten)]
+    pub host: HostArgs,
     /// After the last frame, write every entity and component as JSON to FILE.
     #[arg(long, value_name = "FILE")]
     pub dump_state: Option<PathBuf>,
@@ -69,6 +54,29 @@ pub struct RunArgs {
     /// (windowed or headless; headless needs a GPU or Mesa's CPU Vulkan driver).
     #[arg(long, value_name = "FILE.png")]
     pub screenshot: Option<PathBuf>,
+}
+
+/// The host options `onyx run` and `onyx dev` share.
+#[derive(Args, Debug)]
+pub struct HostArgs {
+    /// A plugin to load: a library path or a NAME (repeatable; loaded in order).
+    #[arg(long = "plugin", value_name = "PATH|NAME")]
+    pub plugins: Vec<String>,
+    /// A scene file (RON) to load before the first frame.
+    #[arg(long, value_name = "FILE")]
+    pub scene: Option<PathBuf>,
+    /// Run without a window (and without a GPU): `run` as fast as possible, `dev` in real time.
+    #[arg(long)]
+    pub headless: bool,
+    /// Stop after N frames (without it: until the window is closed or a plugin quits).
+    #[arg(long, value_name = "N")]
+    pub frames: Option<u64>,
+    /// Fixed simulation steps per second.
+    #[arg(long, value_name = "HZ", default_value_t = 60.0)]
+    pub fixed_hz: f64,
+    /// Most fixed steps per frame (the spiral-of-death guard).
+    #[arg(long, value_name = "N", default_value_t = 8)]
+    pub max_steps: u32,
     /// A setting for a plugin, read in its on_attach (repeatable): `hello.quit_after=10`.
     #[arg(long = "set", value_name = "PLUGIN.KEY=VALUE", value_parser = parse_setting)]
     pub settings: Vec<(String, String, String)>,
@@ -122,31 +130,10 @@ pub struct DevArgs {
     /// A plugin crate's directory (repeatable): built, loaded, rebuilt and reloaded on change.
     #[arg(long = "plugin-crate", value_name = "DIR", required = true)]
     pub plugin_crates: Vec<PathBuf>,
-    /// Also load this prebuilt plugin (a path or NAME, as for `onyx run`; repeatable). It is
-    /// reloaded when its file changes, but not built.
-    #[arg(long = "plugin", value_name = "PATH|NAME")]
-    pub plugins: Vec<String>,
-    /// A scene file (RON) to load before the first frame.
-    #[arg(long, value_name = "FILE")]
-    pub scene: Option<PathBuf>,
-    /// Run without a window, in real time (about 60 frames per second).
-    #[arg(long)]
-    pub headless: bool,
-    /// Stop after N frames (without it: until the window is closed or a plugin quits).
-    #[arg(long, value_name = "N")]
-    pub frames: Option<u64>,
-    /// Fixed simulation steps per second.
-    #[arg(long, value_name = "HZ", default_value_t = 60.0)]
-    pub fixed_hz: f64,
-    /// Most fixed steps per frame (the spiral-of-death guard).
-    #[arg(long, value_name = "N", default_value_t = 8)]
-    pub max_steps: u32,
-    /// A setting for a plugin, read in its on_attach (repeatable): `my_plugin.speed=2`.
-    #[arg(long = "set", value_name = "PLUGIN.KEY=VALUE", value_parser = parse_setting)]
-    pub settings: Vec<(String, String, String)>,
-    /// Window size in pixels.
-    #[arg(long, value_name = "WxH", default_value = "1280x720", value_parser = parse_size)]
-    pub size: (u32, u32),
+    /// What else to run and how (shared with `onyx run`; `--plugin` libraries are reloaded
+    /// when their file changes, but not built).
+    #[command(flatten)]
+    pub host: HostArgs,
 }
 
 fn parse_setting(text: &str) -> Result<(String, String, String), String> {

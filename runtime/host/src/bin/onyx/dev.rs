@@ -19,7 +19,7 @@ use std::time::{Duration, Instant};
 
 use anyhow::{anyhow, Context as _};
 use notify::{RecursiveMode, Watcher};
-use onyx_runtime::window::{run_windowed, WindowOptions};
+use onyx_runtime::window::run_windowed;
 use onyx_runtime::Host;
 
 use crate::cli::DevArgs;
@@ -346,23 +346,7 @@ pub fn dev(args: DevArgs) -> Result<(), Failure> {
     }
 
     // 2. The host, as `onyx run` sets it up, with hot reload on.
-    let mut host = Host::new(crate::host_config(
-        args.fixed_hz,
-        args.max_steps,
-        &args.settings,
-    ));
-    for library in &libraries {
-        host.load_plugin_file(library)
-            .map_err(|e| Failure::Start(anyhow::Error::new(e)))?;
-    }
-    for spec in &args.plugins {
-        host.load_plugin(spec)
-            .map_err(|e| Failure::Start(anyhow::Error::new(e)))?;
-    }
-    if let Some(scene) = &args.scene {
-        host.load_scene(scene)
-            .map_err(|e| Failure::Start(anyhow::Error::new(e)))?;
-    }
+    let mut host = crate::start_host(&args.host, &libraries)?;
     host.set_hot_reload(true)
         .context("cannot watch the plugin libraries")
         .map_err(Failure::Start)?;
@@ -383,16 +367,11 @@ pub fn dev(args: DevArgs) -> Result<(), Failure> {
     tracing::info!("watching the plugin sources; save a change to rebuild and reload");
 
     // 4. Frames.
-    let result = if args.headless {
-        let frames = run_headless(&mut host, args.frames);
+    let result = if args.host.headless {
+        let frames = run_headless(&mut host, args.host.frames);
         Ok(frames)
     } else {
-        let options = WindowOptions {
-            title: "Onyx dev".into(),
-            size: args.size,
-            frames: args.frames,
-            ..Default::default()
-        };
+        let options = crate::window_options(&args.host, "Onyx dev");
         run_windowed(&mut host, options)
             .map(|summary| summary.frames)
             .map_err(|e| Failure::Start(anyhow::Error::new(e)))

@@ -16,7 +16,7 @@ use onyx_runtime::scene::write_atomically;
 use onyx_runtime::window::{run_windowed, shader_dir, WindowOptions};
 use onyx_runtime::{Host, HostConfig, PluginStatus};
 
-use cli::{Cli, Command, RunArgs};
+use cli::{Cli, Command, HostArgs, RunArgs};
 
 /// Why `onyx` stopped, with its exit code.
 enum Failure {
@@ -57,14 +57,14 @@ fn main() -> ExitCode {
 }
 
 /// The host configuration of `onyx run` and `onyx dev`.
-fn host_config(fixed_hz: f64, max_steps: u32, settings: &[(String, String, String)]) -> HostConfig {
+fn host_config(args: &HostArgs) -> HostConfig {
     HostConfig {
         clock: ClockSettings {
-            fixed_hz,
-            max_steps_per_frame: max_steps,
+            fixed_hz: args.fixed_hz,
+            max_steps_per_frame: args.max_steps,
             ..Default::default()
         },
-        plugin_settings: settings.to_vec(),
+        plugin_settings: args.settings.clone(),
         search_path: PluginSearchPath::from_env(),
         // Relative model and texture paths start from the working directory.
         asset_root: Default::default(),
@@ -90,8 +90,13 @@ fn check_faults(host: &Host) -> Result<(), Failure> {
     Ok(())
 }
 
-fn run(args: RunArgs) -> Result<(), Failure> {
-    let mut host = Host::new(host_config(args.fixed_hz, args.max_steps, &args.settings));
+/// A host set up as `args` say: `libraries` first, then `--plugin`s in order, then the scene.
+fn start_host(args: &HostArgs, libraries: &[std::path::PathBuf]) -> Result<Host, Failure> {
+    let mut host = Host::new(host_config(args));
+    for library in libraries {
+        host.load_plugin_file(library)
+            .map_err(|e| Failure::Start(anyhow::Error::new(e)))?;
+    }
     for spec in &args.plugins {
         host.load_plugin(spec)
             .map_err(|e| Failure::Start(anyhow::Error::new(e)))?;
@@ -100,6 +105,23 @@ fn run(args: RunArgs) -> Result<(), Failure> {
         host.load_scene(scene)
             .map_err(|e| Failure::Start(anyhow::Error::new(e)))?;
     }
+    Ok(host)
+}
+
+/// The window `args` ask for, titled `title`.
+fn window_options(args: &HostArgs, title: &str) -> WindowOptions {
+    WindowOptions {
+        title: title.to_owned(),
+        size: args.size,
+        frames: args.frames,
+        vsync: !args.no_vsync,
+        ..Default::default()
+    }
+}
+
+fn run(run_args: RunArgs) -> Result<(), Failure> {
+    let args = &run_args.host;
+    let mut host = start_host(args, &[])?;
 
     let (frames, render) = if args.headless {
         let dt = 1.0 / args.fixed_hz;
@@ -112,23 +134,18 @@ fn run(args: RunArgs) -> Result<(), Failure> {
         }
         (frames, None)
     } else {
-        let options = WindowOptions {
-            size: args.size,
-            frames: args.frames,
-            vsync: !args.no_vsync,
-            ..Default::default()
-        };
+        let options = window_options(args, "Onyx");
         let summary =
             run_windowed(&mut host, options).map_err(|e| Failure::Start(anyhow::Error::new(e)))?;
         (summary.frames, summary.render)
     };
-    if let Some(path) = &args.screenshot {
+    if let Some(path) = &run_args.screenshot {
         screenshot(&mut host, render, args.size, path).map_err(Failure::Run)?;
     }
     host.shutdown();
     tracing::info!(frames, ticks = host.time().ticks, "run finished");
 
-    if let Some(path) = &args.dump_state {
+    if let Some(path) = &run_args.dump_state {
         let text = serde_json::to_string_pretty(&host.dump_state())
             .context("could not serialize the state dump")
             .map_err(Failure::Run)?;
@@ -136,7 +153,7 @@ fn run(args: RunArgs) -> Result<(), Failure> {
             .with_context(|| format!("could not write the state dump to `{}`", path.display()))
             .map_err(Failure::Run)?;
     }
-    if let Some(path) = &args.save_scene {
+    if let Some(path) = &run_args.save_scene {
         host.save_scene(path)
             .map_err(|e| Failure::Run(anyhow::Error::new(e)))?;
     }
