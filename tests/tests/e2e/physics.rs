@@ -344,3 +344,77 @@ fn invalid_physics_components_are_refused() {
         assert!(ctx.apply_force(e, Vec3::X).is_err(), "no collider, no body");
     });
 }
+
+#[test]
+fn a_hull_from_a_model_falls_and_rests_and_a_missing_model_is_reported_once() {
+    let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("..");
+    let events = Arc::new(Mutex::new(Vec::new()));
+    let e = events.clone();
+    struct Watcher(Arc<Mutex<Vec<String>>>);
+    impl Plugin for Watcher {
+        fn on_event(&mut self, _: &mut Ctx, event: &Event) {
+            if let Event::Graphics(g) = event {
+                self.0.lock().unwrap().push(format!("{g:?}"));
+            }
+        }
+    }
+    let mut host = HeadlessHost::with_config(onyx_runtime::HostConfig::default().asset_root(root));
+    host.add_plugin("watcher", Watcher(e)).unwrap();
+    let spawner = Scripted {
+        script: Box::new(|ctx, frame| {
+            if frame == 0 {
+                ground(ctx);
+                let cow = ctx
+                    .load_mesh("assets/models/spot/spot_triangulated.obj")
+                    .unwrap();
+                let hull = Collider::new(onyx_plugin_api::ColliderShape::ConvexHull { mesh: cow });
+                ctx.spawn((
+                    Name::new("cow"),
+                    Transform::from_xyz(0.0, 2.0, 0.0),
+                    RigidBody::dynamic(),
+                    hull,
+                ))
+                .unwrap();
+                let missing = ctx.load_mesh("assets/models/missing.obj").unwrap();
+                let bad =
+                    Collider::new(onyx_plugin_api::ColliderShape::ConvexHull { mesh: missing });
+                ctx.spawn((
+                    Name::new("ghost"),
+                    Transform::from_xyz(3.0, 2.0, 0.0),
+                    RigidBody::dynamic(),
+                    bad,
+                ))
+                .unwrap();
+            }
+        }),
+        frame: 0,
+        events: Arc::new(Mutex::new(Vec::new())),
+    };
+    host.add_plugin("spawner", spawner).unwrap();
+    host.step(240);
+    let (_, cow) = host.find::<RigidBody>("cow").unwrap();
+    assert!(
+        cow.grounded && cow.linear_velocity.length() < 0.05,
+        "the cow came to rest: {cow:?}"
+    );
+    let (_, t) = host.find::<Transform>("cow").unwrap();
+    assert!(
+        t.translation.y > 0.0 && t.translation.y < 1.5,
+        "resting on the ground, not through it: {}",
+        t.translation.y
+    );
+    let failures: Vec<String> = events
+        .lock()
+        .unwrap()
+        .iter()
+        .filter(|e| e.contains("AssetFailed"))
+        .cloned()
+        .collect();
+    assert_eq!(failures.len(), 1, "{failures:?}");
+    assert!(failures[0].contains("missing.obj"), "{failures:?}");
+    let (_, ghost) = host.find::<Transform>("ghost").unwrap();
+    assert_eq!(
+        ghost.translation.y, 2.0,
+        "no collider, no body: it does not move"
+    );
+}

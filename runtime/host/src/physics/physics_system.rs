@@ -36,6 +36,9 @@ pub struct PhysicsSystem {
     entity_of: HashMap<BodyHandle, hecs::Entity>,
     /// Bodies removed since the last step, whose "contact ended" events arrive with it.
     departed: HashMap<BodyHandle, hecs::Entity>,
+    /// Colliders that could not be built, kept so each failure is reported once (until the
+    /// component changes).
+    failed: HashMap<hecs::Entity, Collider>,
     commands: Vec<(Entity, PhysicsCommand)>,
 }
 
@@ -82,6 +85,7 @@ impl PhysicsSystem {
             links: HashMap::new(),
             entity_of: HashMap::new(),
             departed: HashMap::new(),
+            failed: HashMap::new(),
             commands: Vec::new(),
         }
     }
@@ -192,11 +196,18 @@ impl PhysicsSystem {
         self.write_back(world);
     }
 
+    /// The physics collider for a component, or the event that says why there is none (a
+    /// model that cannot be loaded is a graphics asset failure naming the file).
     fn collider_desc(
         collider: &Collider,
         assets: &AssetRegistry,
         entity: Entity,
-    ) -> Result<ColliderDesc, String> {
+    ) -> Result<ColliderDesc, Event> {
+        let error = |message: String| {
+            Event::Platform(PlatformEvent::Error {
+                message: format!("entity {entity}: collider not created: {message}"),
+            })
+        };
         let desc = match collider.shape {
             ColliderShape::Sphere { radius } => ColliderDesc::sphere(radius),
             ColliderShape::Box {
@@ -208,30 +219,30 @@ impl PhysicsSystem {
             } => ColliderDesc::capsule(half_height, radius),
             ColliderShape::Plane => ColliderDesc::half_space(Vec3::Y),
             ColliderShape::ConvexHull { mesh } | ColliderShape::TriMesh { mesh } => {
-                let path = assets.mesh_path(mesh).ok_or_else(|| {
-                    format!(
-                        "entity {entity}: a mesh collider needs a loaded model, not mesh id {}",
-                        mesh.0
-                    )
-                })?;
-                let data = onyx_render::mesh::load_obj_geometry(&assets.resolve(path))
-                    .map_err(|e| format!("entity {entity}: {e}"))?;
+                let path = assets
+                    .mesh_path(mesh)
+                    .ok_or_else(|| error(format!("mesh id {} is not a loaded model", mesh.0)))?;
+                let data =
+                    onyx_render::mesh::load_obj_geometry(&assets.resolve(path)).map_err(|e| {
+                        Event::Graphics(GraphicsEvent::AssetFailed {
+                            path: path.display().to_string(),
+                            message: format!("entity {entity} has no collider: {e}"),
+                        })
+                    })?;
                 let points: Vec<Vec3> = data
                     .vertices
                     .iter()
                     .map(|v| Vec3::from(v.position))
                     .collect();
                 if matches!(collider.shape, ColliderShape::ConvexHull { .. }) {
-                    ColliderDesc::convex_hull(&points)
-                        .map_err(|e| format!("entity {entity}: {e}"))?
+                    ColliderDesc::convex_hull(&points).map_err(|e| error(e.to_string()))?
                 } else {
                     let triangles = data
                         .indices
                         .chunks_exact(3)
                         .map(|t| [t[0], t[1], t[2]])
                         .collect();
-                    ColliderDesc::trimesh(points, triangles)
-                        .map_err(|e| format!("entity {entity}: {e}"))?
+                    ColliderDesc::trimesh(points, triangles).map_err(|e| error(e.to_string()))?
                 }
             }
         };
@@ -256,6 +267,8 @@ impl PhysicsSystem {
         for e in stale {
             self.remove(e);
         }
+        self.failed
+            .retain(|e, _| world.get::<&Collider>(*e).is_ok());
         let rows: Vec<(hecs::Entity, Transform, Collider, Option<RigidBody>)> = world
             .query::<(hecs::Entity, &Transform, &Collider, Option<&RigidBody>)>()
             .iter()
@@ -266,16 +279,20 @@ impl PhysicsSystem {
                 .links
                 .get(&e)
                 .is_none_or(|link| link.built_from != (rb.map(config_only), collider));
-            let _ = &collider;
             if rebuild {
                 self.remove(e);
-                let built = Self::collider_desc(&collider, assets, to_api(e))
-                    .map(|desc| self.build(e, &t, rb.as_ref(), collider, desc));
-                if let Err(message) = built {
-                    events.push(Event::Graphics(GraphicsEvent::AssetFailed {
-                        path: String::new(),
-                        message: format!("collider not created: {message}"),
-                    }));
+                if self.failed.get(&e) == Some(&collider) {
+                    continue;
+                }
+                match Self::collider_desc(&collider, assets, to_api(e)) {
+                    Ok(desc) => {
+                        self.failed.remove(&e);
+                        self.build(e, &t, rb.as_ref(), collider, desc);
+                    }
+                    Err(event) => {
+                        events.push(event);
+                        self.failed.insert(e, collider);
+                    }
                 }
                 continue;
             }

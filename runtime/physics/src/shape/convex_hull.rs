@@ -1,6 +1,6 @@
 //! [`ConvexHull`] shape built from a point cloud (incremental hull), with polygon faces.
 
-use std::collections::HashSet;
+use std::collections::{HashMap, HashSet};
 
 use glam::{Mat3, Vec3};
 
@@ -28,6 +28,9 @@ pub enum HullError {
     NonFinite,
     /// More than [`HULL_MAX_INPUT_POINTS`] points.
     TooManyPoints,
+    /// Rounding broke the incremental construction (the surface stopped being a closed
+    /// manifold); reported instead of looping or growing without bound.
+    NumericallyDegenerate,
 }
 
 impl std::fmt::Display for HullError {
@@ -35,6 +38,11 @@ impl std::fmt::Display for HullError {
         match self {
             Self::Empty => write!(f, "convex hull needs at least one point"),
             Self::NonFinite => write!(f, "convex hull input has a non-finite coordinate"),
+            Self::NumericallyDegenerate => write!(
+                f,
+                "convex hull construction failed on near-degenerate input (rounding); \
+                 simplify the point cloud"
+            ),
             Self::TooManyPoints => {
                 write!(
                     f,
@@ -137,7 +145,7 @@ impl ConvexHull {
         if (points[i3] - points[i0]).dot(plane_n).abs() <= eps {
             return Ok(Self::flat(points, points[i0], plane_n, eps));
         }
-        Ok(Self::solid(points, [i0, i1, i2, i3], eps))
+        Self::solid(points, [i0, i1, i2, i3], eps)
     }
 
     fn degenerate(vertices: Vec<Vec3>, dimension: HullDimension) -> Self {
@@ -220,7 +228,7 @@ impl ConvexHull {
         }
     }
 
-    fn solid(points: &[Vec3], init: [usize; 4], eps: f32) -> Self {
+    fn solid(points: &[Vec3], init: [usize; 4], eps: f32) -> Result<Self, HullError> {
         #[derive(Clone)]
         struct Tri {
             v: [usize; 3],
@@ -249,46 +257,85 @@ impl ConvexHull {
             }
             tris.push(t);
         }
-        let mut visible_edges: HashSet<(usize, usize)> = HashSet::new();
+        // Directed edge -> the live triangle that owns it. Each edge of a closed surface has
+        // exactly one owner and its reverse one other, which is how neighbours are found.
+        let mut owner: HashMap<(usize, usize), usize> = HashMap::new();
+        for (ti, t) in tris.iter().enumerate() {
+            for k in 0..3 {
+                owner.insert((t.v[k], t.v[(k + 1) % 3]), ti);
+            }
+        }
+        // A hull of n points has at most 2n - 4 triangles; more means rounding broke it.
+        let max_alive = 2 * points.len() + 8;
+        let mut alive = tris.len();
         let mut visible: Vec<usize> = Vec::new();
+        let mut seen: HashSet<usize> = HashSet::new();
+        let mut horizon: Vec<(usize, usize)> = Vec::new();
         for (pi, p) in points.iter().enumerate() {
             if init.contains(&pi) {
                 continue;
             }
-            visible.clear();
+            // Start from the face that sees the point best, then grow the visible region
+            // through neighbours only, so it is connected and its border is one closed loop.
+            // Neighbours within `eps` of the point's plane join it too: leaving such a
+            // nearly-coplanar face as an island inside the region would pinch the surface.
+            let mut best = None;
+            let mut best_dist = eps;
             for (ti, t) in tris.iter().enumerate() {
-                if t.alive && t.n.dot(*p) - t.d > eps {
-                    visible.push(ti);
+                let dist = t.n.dot(*p) - t.d;
+                if t.alive && dist > best_dist {
+                    best_dist = dist;
+                    best = Some(ti);
                 }
             }
-            if visible.is_empty() {
-                continue;
-            }
-            visible_edges.clear();
-            for &ti in &visible {
+            let Some(start) = best else { continue };
+            visible.clear();
+            seen.clear();
+            horizon.clear();
+            let mut stack = vec![start];
+            seen.insert(start);
+            while let Some(ti) = stack.pop() {
+                visible.push(ti);
                 let v = tris[ti].v;
                 for k in 0..3 {
-                    visible_edges.insert((v[k], v[(k + 1) % 3]));
-                }
-            }
-            let mut horizon = Vec::new();
-            for &ti in &visible {
-                let v = tris[ti].v;
-                for k in 0..3 {
-                    let e = (v[k], v[(k + 1) % 3]);
-                    if !visible_edges.contains(&(e.1, e.0)) {
-                        horizon.push(e);
+                    let (ea, eb) = (v[k], v[(k + 1) % 3]);
+                    match owner.get(&(eb, ea)) {
+                        Some(&ni) if tris[ni].alive && tris[ni].n.dot(*p) - tris[ni].d > -eps => {
+                            if seen.insert(ni) {
+                                stack.push(ni);
+                            }
+                        }
+                        _ => horizon.push((ea, eb)),
                     }
+                }
+            }
+            for &ti in &visible {
+                let v = tris[ti].v;
+                for k in 0..3 {
+                    owner.remove(&(v[k], v[(k + 1) % 3]));
                 }
                 tris[ti].alive = false;
             }
-            for (ea, eb) in horizon {
+            alive -= visible.len();
+            for &(ea, eb) in &horizon {
+                let ti = tris.len();
                 tris.push(make(ea, eb, pi));
+                owner.insert((ea, eb), ti);
+                owner.insert((eb, pi), ti);
+                owner.insert((pi, ea), ti);
             }
-            if tris.len() > 4 * points.len() + 64 {
-                tris.retain(|t| t.alive);
+            alive += horizon.len();
+            if alive > max_alive {
+                return Err(HullError::NumericallyDegenerate);
             }
         }
+        // The surface is closed: every live edge has its reverse, and T = 2V - 4.
+        debug_assert!(
+            tris.iter()
+                .filter(|t| t.alive)
+                .all(|t| (0..3).all(|k| owner.contains_key(&(t.v[(k + 1) % 3], t.v[k])))),
+            "convex hull surface is not closed"
+        );
         tris.retain(|t| t.alive && t.n != Vec3::ZERO);
 
         // Compact vertices.
@@ -358,12 +405,12 @@ impl ConvexHull {
         }
         let mut edges: Vec<(u32, u32)> = edge_set.into_iter().collect();
         edges.sort_unstable();
-        Self {
+        Ok(Self {
             vertices,
             faces,
             edges,
             dimension: HullDimension::Solid,
-        }
+        })
     }
 
     /// Hull vertices (local frame, metres).
