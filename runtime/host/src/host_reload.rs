@@ -59,7 +59,7 @@ impl Host {
             return;
         };
         let changed = watcher.poll();
-        for path in changed {
+        for (path, hash) in changed {
             let names: Vec<String> = self
                 .plugins
                 .iter()
@@ -68,7 +68,7 @@ impl Host {
                 .collect();
             for name in names {
                 tracing::info!(plugin = %name, path = %path.display(), "plugin file rebuilt; reloading");
-                let _ = self.reload_plugin(&name);
+                let _ = self.reload_with_hash(&name, Some(hash));
             }
         }
     }
@@ -96,7 +96,12 @@ impl Host {
     /// A faulted plugin is revived by a successful reload. The old image stays mapped (it is
     /// never unloaded; see [`open_library`]).
     pub fn reload_plugin(&mut self, name: &str) -> Result<(), ReloadError> {
-        let result = self.try_reload(name);
+        self.reload_with_hash(name, None)
+    }
+
+    /// [`Host::reload_plugin`], when the file's content hash is already known.
+    fn reload_with_hash(&mut self, name: &str, hash: Option<u64>) -> Result<(), ReloadError> {
+        let result = self.try_reload(name, hash);
         match &result {
             Ok(()) => {
                 tracing::info!(plugin = name, "plugin reloaded");
@@ -119,7 +124,7 @@ impl Host {
         result
     }
 
-    fn try_reload(&mut self, name: &str) -> Result<(), ReloadError> {
+    fn try_reload(&mut self, name: &str, known_hash: Option<u64>) -> Result<(), ReloadError> {
         let index = self
             .plugins
             .iter()
@@ -133,7 +138,7 @@ impl Host {
             });
         };
         let path: PathBuf = path.clone();
-        let hash = content_hash(&path).ok();
+        let hash = known_hash.or_else(|| content_hash(&path).ok());
         if let (Some(watcher), Some(hash)) = (&mut self.watcher, hash) {
             watcher.set_hash(&path, hash);
         }

@@ -63,6 +63,17 @@ pub fn truncation(path: &Path) -> std::io::Result<Option<(u64, u64)>> {
     Ok((needed > len).then_some((needed, len)))
 }
 
+/// Whether `path` is an ELF file that its own headers say is complete (`false` for other
+/// formats, which need another way to tell).
+pub fn is_complete_elf(path: &Path) -> bool {
+    let mut magic = [0u8; 4];
+    let is_elf = std::fs::File::open(path)
+        .and_then(|mut f| f.read_exact(&mut magic))
+        .is_ok()
+        && &magic == b"\x7fELF";
+    is_elf && matches!(truncation(path), Ok(None))
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -8,10 +8,11 @@ use std::time::{Duration, Instant};
 
 use notify::{RecursiveMode, Watcher};
 
-/// How long a file must go without change events, with an unchanged size, before it is
-/// considered completely written. Cargo writes a library in several pieces (and links it
-/// into place); loading a half-written file would fail.
-pub const RELOAD_QUIET_PERIOD: Duration = Duration::from_millis(25);
+/// How long a file must go without change events before it is checked for completeness.
+/// Cargo writes a library in several pieces (and links it into place); loading a
+/// half-written file would fail. An ELF file whose headers say it is whole is taken at once;
+/// other files must also keep the same size over a second quiet period.
+pub const RELOAD_QUIET_PERIOD: Duration = Duration::from_millis(10);
 
 /// A content hash of a file, to ignore writes that change nothing (a `touch`, a no-op build).
 pub fn content_hash(path: &Path) -> std::io::Result<u64> {
@@ -29,7 +30,8 @@ struct WatchedFile {
 }
 
 /// Watches plugin library files (through their directories, as builds replace files) and
-/// reports each file once its new content is complete and differs from what was loaded.
+/// reports each file once its new content is complete and differs from what was loaded, with
+/// the hash of that content.
 pub struct LibraryWatcher {
     watcher: notify::RecommendedWatcher,
     /// Events, stamped with when they happened (not when they were read).
@@ -105,7 +107,7 @@ impl LibraryWatcher {
 
     /// Files that changed and are now complete (quiet for [`RELOAD_QUIET_PERIOD`], same size
     /// twice, new content). Call it once per frame.
-    pub fn poll(&mut self) -> Vec<PathBuf> {
+    pub fn poll(&mut self) -> Vec<(PathBuf, u64)> {
         let now = Instant::now();
         while let Ok((at, event)) = self.events.try_recv() {
             let Ok(event) = event else { continue };
@@ -130,7 +132,9 @@ impl LibraryWatcher {
             let Ok(len) = std::fs::metadata(path).map(|m| m.len()) else {
                 continue; // removed for now; a later event will mark it again
             };
-            if file.len != Some(len) {
+            let complete =
+                file.len == Some(len) || super::library_completeness::is_complete_elf(path);
+            if !complete {
                 file.len = Some(len);
                 file.dirty_since = Some(now);
                 continue;
@@ -142,7 +146,7 @@ impl LibraryWatcher {
                 }
                 Ok(hash) => {
                     file.hash = hash;
-                    ready.push(path.clone());
+                    ready.push((path.clone(), hash));
                 }
                 Err(error) => {
                     tracing::warn!(path = %path.display(), "cannot read rebuilt plugin: {error}")

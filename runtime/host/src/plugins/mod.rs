@@ -9,7 +9,7 @@
 //! - `library_watcher.rs`: [`LibraryWatcher`], notices rebuilt libraries (hot reload).
 //! - `reload_error.rs`: [`ReloadError`], why a new build did not replace the old one.
 
-mod library_completeness;
+pub mod library_completeness;
 pub mod library_watcher;
 mod plugin_load_error;
 mod plugin_loader;
