@@ -1,0 +1,394 @@
+//! The [`Engine`] trait: one interface over Onyx physics and rapier3d so a scene is written
+//! once and built in both.
+
+use onyx_physics::glam::Vec3;
+use rapier3d::prelude as rp;
+
+/// Which engine.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub enum EngineKind {
+    /// Onyx (`onyx-physics`).
+    Onyx,
+    /// rapier3d.
+    Rapier,
+}
+
+impl EngineKind {
+    /// Both engines, in report order.
+    pub const ALL: [EngineKind; 2] = [EngineKind::Onyx, EngineKind::Rapier];
+
+    /// Short name.
+    #[must_use]
+    pub fn name(self) -> &'static str {
+        match self {
+            EngineKind::Onyx => "onyx",
+            EngineKind::Rapier => "rapier",
+        }
+    }
+
+    /// A fresh engine of this kind with the given settings.
+    #[must_use]
+    pub fn create(self, s: StepSettings) -> Box<dyn Engine> {
+        match self {
+            EngineKind::Onyx => Box::new(OnyxEngine::new(s)),
+            EngineKind::Rapier => Box::new(RapierEngine::new(s)),
+        }
+    }
+}
+
+/// Matched step settings: step rate, and substeps (Onyx) or solver iterations (rapier).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct StepSettings {
+    /// Steps per simulated second.
+    pub hz: f32,
+    /// Onyx `substeps` / rapier `num_solver_iterations`.
+    pub iterations: u32,
+}
+
+impl StepSettings {
+    /// The converged reference setting: 240 Hz, 8 substeps.
+    pub const REFERENCE: StepSettings = StepSettings {
+        hz: 240.0,
+        iterations: 8,
+    };
+
+    /// Step length, seconds.
+    #[must_use]
+    pub fn dt(self) -> f32 {
+        1.0 / self.hz
+    }
+}
+
+/// Collision shape of a [`BodySpec`].
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum ShapeSpec {
+    /// Sphere of this radius.
+    Sphere(f32),
+    /// Box of these half extents.
+    Cuboid(Vec3),
+}
+
+/// One body with one collider, engine-neutral.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct BodySpec {
+    /// Fixed (static) instead of dynamic.
+    pub fixed: bool,
+    /// Position of the centre.
+    pub position: Vec3,
+    /// Initial linear velocity.
+    pub velocity: Vec3,
+    /// Shape.
+    pub shape: ShapeSpec,
+    /// Density, kg/m³.
+    pub density: f32,
+    /// Coulomb friction (static = dynamic), combined as max... both colliders of a scene
+    /// use the same value unless stated.
+    pub friction: f32,
+    /// Restitution, combined with the max rule in both engines.
+    pub restitution: f32,
+    /// Continuous collision detection on this body.
+    pub ccd: bool,
+    /// Gravity scale.
+    pub gravity_scale: f32,
+}
+
+impl BodySpec {
+    /// A dynamic body of this shape at `position` (density 1000, friction 0.5, no bounce).
+    #[must_use]
+    pub fn dynamic(shape: ShapeSpec, position: Vec3) -> Self {
+        Self {
+            fixed: false,
+            position,
+            velocity: Vec3::ZERO,
+            shape,
+            density: 1000.0,
+            friction: 0.5,
+            restitution: 0.0,
+            ccd: false,
+            gravity_scale: 1.0,
+        }
+    }
+
+    /// A fixed body of this shape at `position`.
+    #[must_use]
+    pub fn fixed(shape: ShapeSpec, position: Vec3) -> Self {
+        Self {
+            fixed: true,
+            ..Self::dynamic(shape, position)
+        }
+    }
+
+    /// A fixed ground box whose top face is at `top` (centre x/z), `half` wide.
+    #[must_use]
+    pub fn ground(center: Vec3, half: f32) -> Self {
+        Self::fixed(
+            ShapeSpec::Cuboid(Vec3::new(half, 0.5, half)),
+            center - Vec3::Y * 0.5,
+        )
+    }
+
+    /// With this initial velocity.
+    #[must_use]
+    pub fn velocity(mut self, v: Vec3) -> Self {
+        self.velocity = v;
+        self
+    }
+
+    /// With this friction.
+    #[must_use]
+    pub fn friction(mut self, mu: f32) -> Self {
+        self.friction = mu;
+        self
+    }
+
+    /// With this restitution.
+    #[must_use]
+    pub fn restitution(mut self, e: f32) -> Self {
+        self.restitution = e;
+        self
+    }
+
+    /// With this density.
+    #[must_use]
+    pub fn density(mut self, d: f32) -> Self {
+        self.density = d;
+        self
+    }
+
+    /// With CCD on or off.
+    #[must_use]
+    pub fn ccd(mut self, on: bool) -> Self {
+        self.ccd = on;
+        self
+    }
+
+    /// With this gravity scale.
+    #[must_use]
+    pub fn gravity_scale(mut self, s: f32) -> Self {
+        self.gravity_scale = s;
+        self
+    }
+}
+
+/// Index of a body inside an [`Engine`] (insertion order).
+pub type BodyId = usize;
+
+/// A physics engine under test. Sleeping is off in both engines so that resting scenes
+/// measure the solver, not the sleep threshold.
+pub trait Engine {
+    /// Which engine.
+    fn kind(&self) -> EngineKind;
+    /// Adds a body with its collider.
+    fn add(&mut self, spec: &BodySpec) -> BodyId;
+    /// One fixed step.
+    fn step(&mut self);
+    /// Centre position of a body.
+    fn position(&self, id: BodyId) -> Vec3;
+    /// Linear velocity of a body.
+    fn velocity(&self, id: BodyId) -> Vec3;
+    /// Angular velocity of a body.
+    fn angular_velocity(&self, id: BodyId) -> Vec3;
+    /// Mass of a body, kg (0 for fixed bodies).
+    fn mass(&self, id: BodyId) -> f32;
+    /// Number of bodies.
+    fn len(&self) -> usize;
+    /// Whether there are no bodies.
+    fn is_empty(&self) -> bool {
+        self.len() == 0
+    }
+}
+
+/// Onyx physics behind [`Engine`].
+pub struct OnyxEngine {
+    world: onyx_physics::PhysicsWorld,
+    bodies: Vec<onyx_physics::BodyHandle>,
+}
+
+impl OnyxEngine {
+    /// Empty world with these settings (other settings at their defaults, sleeping off).
+    #[must_use]
+    pub fn new(s: StepSettings) -> Self {
+        let settings = onyx_physics::PhysicsSettings {
+            dt: s.dt(),
+            substeps: s.iterations.max(1),
+            sleep_enabled: false,
+            ..Default::default()
+        };
+        Self {
+            world: onyx_physics::PhysicsWorld::new(settings),
+            bodies: Vec::new(),
+        }
+    }
+
+    /// The wrapped world.
+    #[must_use]
+    pub fn world(&self) -> &onyx_physics::PhysicsWorld {
+        &self.world
+    }
+}
+
+impl Engine for OnyxEngine {
+    fn kind(&self) -> EngineKind {
+        EngineKind::Onyx
+    }
+
+    fn add(&mut self, spec: &BodySpec) -> BodyId {
+        use onyx_physics::{ColliderDesc, RigidBodyDesc};
+        let desc = if spec.fixed {
+            RigidBodyDesc::fixed()
+        } else {
+            RigidBodyDesc::dynamic()
+                .linvel(spec.velocity)
+                .ccd_enabled(spec.ccd)
+                .gravity_scale(spec.gravity_scale)
+                .can_sleep(false)
+        }
+        .translation(spec.position);
+        let h = self.world.insert_body(desc);
+        let c = match spec.shape {
+            ShapeSpec::Sphere(r) => ColliderDesc::sphere(r),
+            ShapeSpec::Cuboid(he) => ColliderDesc::cuboid(he.x, he.y, he.z),
+        }
+        .density(spec.density)
+        .friction(spec.friction)
+        .restitution(spec.restitution);
+        self.world.insert_collider(c, h);
+        self.bodies.push(h);
+        self.bodies.len() - 1
+    }
+
+    fn step(&mut self) {
+        self.world.step();
+    }
+
+    fn position(&self, id: BodyId) -> Vec3 {
+        self.world
+            .body(self.bodies[id])
+            .map_or(Vec3::NAN, |b| b.translation())
+    }
+
+    fn velocity(&self, id: BodyId) -> Vec3 {
+        self.world
+            .body(self.bodies[id])
+            .map_or(Vec3::NAN, |b| b.linvel())
+    }
+
+    fn angular_velocity(&self, id: BodyId) -> Vec3 {
+        self.world
+            .body(self.bodies[id])
+            .map_or(Vec3::NAN, |b| b.angvel())
+    }
+
+    fn mass(&self, id: BodyId) -> f32 {
+        self.world.body(self.bodies[id]).map_or(0.0, |b| {
+            if b.body_type() == onyx_physics::BodyType::Dynamic {
+                b.mass()
+            } else {
+                0.0
+            }
+        })
+    }
+
+    fn len(&self) -> usize {
+        self.bodies.len()
+    }
+}
+
+/// rapier3d behind [`Engine`].
+pub struct RapierEngine {
+    world: rp::PhysicsWorld,
+    bodies: Vec<rp::RigidBodyHandle>,
+}
+
+fn rv(v: Vec3) -> rp::Vector {
+    rp::Vector::new(v.x, v.y, v.z)
+}
+
+fn ov(v: rp::Vector) -> Vec3 {
+    Vec3::new(v.x, v.y, v.z)
+}
+
+impl RapierEngine {
+    /// Empty world with these settings (other parameters at their defaults).
+    #[must_use]
+    pub fn new(s: StepSettings) -> Self {
+        let mut world = rp::PhysicsWorld::new();
+        world.gravity = rp::Vector::new(0.0, -9.81, 0.0);
+        world.integration_parameters.dt = s.dt();
+        world.integration_parameters.num_solver_iterations = s.iterations.max(1) as usize;
+        Self {
+            world,
+            bodies: Vec::new(),
+        }
+    }
+}
+
+impl Engine for RapierEngine {
+    fn kind(&self) -> EngineKind {
+        EngineKind::Rapier
+    }
+
+    fn add(&mut self, spec: &BodySpec) -> BodyId {
+        let body = if spec.fixed {
+            rp::RigidBodyBuilder::fixed()
+        } else {
+            rp::RigidBodyBuilder::dynamic()
+                .linvel(rv(spec.velocity))
+                .ccd_enabled(spec.ccd)
+                .gravity_scale(spec.gravity_scale)
+                .can_sleep(false)
+        }
+        .translation(rv(spec.position));
+        let c = match spec.shape {
+            ShapeSpec::Sphere(r) => rp::ColliderBuilder::ball(r),
+            ShapeSpec::Cuboid(he) => rp::ColliderBuilder::cuboid(he.x, he.y, he.z),
+        }
+        .density(spec.density)
+        .friction(spec.friction)
+        .restitution(spec.restitution)
+        .restitution_combine_rule(rp::CoefficientCombineRule::Max)
+        .friction_combine_rule(rp::CoefficientCombineRule::GeometricMean);
+        let (h, _) = self.world.insert(body, c);
+        self.bodies.push(h);
+        self.bodies.len() - 1
+    }
+
+    fn step(&mut self) {
+        self.world.step();
+    }
+
+    fn position(&self, id: BodyId) -> Vec3 {
+        self.world
+            .bodies
+            .get(self.bodies[id])
+            .map_or(Vec3::NAN, |b| ov(b.translation()))
+    }
+
+    fn velocity(&self, id: BodyId) -> Vec3 {
+        self.world
+            .bodies
+            .get(self.bodies[id])
+            .map_or(Vec3::NAN, |b| ov(b.linvel()))
+    }
+
+    fn angular_velocity(&self, id: BodyId) -> Vec3 {
+        self.world
+            .bodies
+            .get(self.bodies[id])
+            .map_or(Vec3::NAN, |b| ov(b.angvel()))
+    }
+
+    fn mass(&self, id: BodyId) -> f32 {
+        self.world.bodies.get(self.bodies[id]).map_or(0.0, |b| {
+            if b.is_dynamic() {
+                b.mass()
+            } else {
+                0.0
+            }
+        })
+    }
+
+    fn len(&self) -> usize {
+        self.bodies.len()
+    }
+}

@@ -1,0 +1,285 @@
+//! The sweep: every scene × engine × setting, timed and measured.
+
+use std::path::PathBuf;
+use std::time::Instant;
+
+use indicatif::{ProgressBar, ProgressStyle};
+
+use crate::engine::{EngineKind, StepSettings};
+use crate::scenes::{self, Reference, Scene, Size};
+
+/// Runner options (the command line).
+#[derive(Clone, Debug)]
+pub struct Options {
+    /// Reduced sweep and sizes.
+    pub quick: bool,
+    /// Only these scenes (by name); all when `None`.
+    pub scenes: Option<Vec<String>>,
+    /// Output folder for the CSV, Markdown and PNG files.
+    pub out: PathBuf,
+    /// Show a progress bar (on stderr).
+    pub progress: bool,
+}
+
+impl Default for Options {
+    fn default() -> Self {
+        Self {
+            quick: false,
+            scenes: None,
+            out: PathBuf::from("target/physics-compare"),
+            progress: true,
+        }
+    }
+}
+
+impl Options {
+    /// Parses `[--quick] [--scenes a,b] [--out DIR]`.
+    ///
+    /// # Errors
+    /// On an unknown flag or a missing value.
+    pub fn parse(args: impl IntoIterator<Item = String>) -> anyhow::Result<Self> {
+        let mut o = Self::default();
+        let mut it = args.into_iter();
+        while let Some(a) = it.next() {
+            match a.as_str() {
+                "--quick" => o.quick = true,
+                "--no-progress" => o.progress = false,
+                "--scenes" => {
+                    let v = it
+                        .next()
+                        .ok_or_else(|| anyhow::anyhow!("--scenes needs a list"))?;
+                    o.scenes = Some(v.split(',').map(|s| s.trim().to_string()).collect());
+                }
+                "--out" => {
+                    o.out = PathBuf::from(
+                        it.next()
+                            .ok_or_else(|| anyhow::anyhow!("--out needs a folder"))?,
+                    );
+                }
+                "-h" | "--help" => {
+                    anyhow::bail!(
+                        "usage: onyx-physics-bench [--quick] [--scenes a,b] [--out DIR] \
+                         [--no-progress]\nscenes: {}",
+                        scenes::all()
+                            .iter()
+                            .map(|s| s.name())
+                            .collect::<Vec<_>>()
+                            .join(",")
+                    )
+                }
+                other => anyhow::bail!("unknown argument {other:?} (try --help)"),
+            }
+        }
+        Ok(o)
+    }
+
+    /// Problem size.
+    #[must_use]
+    pub fn size(&self) -> Size {
+        if self.quick {
+            Size::Quick
+        } else {
+            Size::Full
+        }
+    }
+
+    /// Step rates swept.
+    #[must_use]
+    pub fn rates(&self) -> Vec<f32> {
+        if self.quick {
+            vec![60.0, 120.0]
+        } else {
+            vec![30.0, 60.0, 120.0, 240.0]
+        }
+    }
+
+    /// Substeps (Onyx) / solver iterations (rapier) swept.
+    #[must_use]
+    pub fn iterations(&self) -> Vec<u32> {
+        if self.quick {
+            vec![1, 4]
+        } else {
+            vec![1, 2, 4, 8]
+        }
+    }
+
+    /// Timed repetitions of each run (median taken).
+    #[must_use]
+    pub fn repeats(&self) -> usize {
+        if self.quick {
+            1
+        } else {
+            3
+        }
+    }
+
+    /// The selected scenes.
+    ///
+    /// # Errors
+    /// On an unknown scene name.
+    pub fn selected(&self) -> anyhow::Result<Vec<&'static dyn Scene>> {
+        let all = scenes::all();
+        match &self.scenes {
+            None => Ok(all),
+            Some(names) => names
+                .iter()
+                .map(|n| {
+                    all.iter().copied().find(|s| s.name() == n).ok_or_else(|| {
+                        anyhow::anyhow!(
+                            "unknown scene {n:?}; known: {}",
+                            all.iter().map(|s| s.name()).collect::<Vec<_>>().join(",")
+                        )
+                    })
+                })
+                .collect(),
+        }
+    }
+}
+
+/// One measured point: scene × engine × setting.
+#[derive(Clone, Debug)]
+pub struct Row {
+    /// Scene name.
+    pub scene: &'static str,
+    /// Engine.
+    pub engine: EngineKind,
+    /// Step setting.
+    pub settings: StepSettings,
+    /// Bodies in the scene.
+    pub bodies: usize,
+    /// Steps per run.
+    pub steps: usize,
+    /// Median ms per step (first step of each run excluded; median over repeats).
+    pub ms_per_step: f64,
+    /// CPU ms per simulated second (`ms_per_step × hz`).
+    pub ms_per_sim_second: f64,
+    /// The scene's raw figure.
+    pub figure: f64,
+    /// Error against the analytic answer or the converged reference.
+    pub error: f64,
+}
+
+/// Outcome of one run: timing and figure.
+struct Measured {
+    ms_per_step: f64,
+    figure: f64,
+    bodies: usize,
+    steps: usize,
+}
+
+fn median(v: &mut [f64]) -> f64 {
+    if v.is_empty() {
+        return f64::NAN;
+    }
+    v.sort_by(f64::total_cmp);
+    v[v.len() / 2]
+}
+
+/// Builds and runs `scene` once in `engine` at `s`.
+fn run_once(scene: &dyn Scene, engine: EngineKind, s: StepSettings, size: Size) -> Measured {
+    let mut e = engine.create(s);
+    let mut trial = scene.build(e.as_mut(), s, size);
+    let steps = scene.steps(s, size);
+    let mut times = Vec::with_capacity(steps);
+    for _ in 0..steps {
+        let t = Instant::now();
+        e.step();
+        times.push(t.elapsed().as_secs_f64() * 1e3);
+        trial.observe(e.as_ref());
+    }
+    // First step excluded (pair creation, allocation).
+    let ms = if times.len() > 1 {
+        median(&mut times[1..])
+    } else {
+        median(&mut times)
+    };
+    Measured {
+        ms_per_step: ms,
+        figure: trial.figure(e.as_ref()),
+        bodies: e.len(),
+        steps,
+    }
+}
+
+/// Runs the whole sweep. `on_row` sees each row as it is produced.
+///
+/// # Errors
+/// On an unknown scene name.
+pub fn run_sweep(opts: &Options, mut on_row: impl FnMut(&Row)) -> anyhow::Result<Vec<Row>> {
+    let scenes = opts.selected()?;
+    let size = opts.size();
+    let rates = opts.rates();
+    let iters = opts.iterations();
+    let settings: Vec<StepSettings> = rates
+        .iter()
+        .flat_map(|&hz| {
+            iters
+                .iter()
+                .map(move |&it| StepSettings { hz, iterations: it })
+        })
+        .collect();
+    let converged = scenes
+        .iter()
+        .filter(|s| s.reference() == Reference::Converged)
+        .count();
+    let total = (scenes.len() * settings.len() * opts.repeats() + converged) * 2;
+    let pb = if opts.progress {
+        ProgressBar::new(total as u64)
+    } else {
+        ProgressBar::hidden()
+    };
+    if let Ok(style) = ProgressStyle::with_template("{bar:40} {pos}/{len} {elapsed} {msg}") {
+        pb.set_style(style);
+    }
+    let mut rows = Vec::new();
+    for scene in scenes {
+        for engine in EngineKind::ALL {
+            let reference = if scene.reference() == Reference::Converged {
+                pb.set_message(format!("{} {} reference", scene.name(), engine.name()));
+                let r = run_once(scene, engine, StepSettings::REFERENCE, size).figure;
+                pb.inc(1);
+                Some(r)
+            } else {
+                None
+            };
+            for &s in &settings {
+                pb.set_message(format!(
+                    "{} {} {} Hz x{}",
+                    scene.name(),
+                    engine.name(),
+                    s.hz,
+                    s.iterations
+                ));
+                let mut ms = Vec::new();
+                let mut last = None;
+                for _ in 0..opts.repeats() {
+                    let m = run_once(scene, engine, s, size);
+                    ms.push(m.ms_per_step);
+                    last = Some(m);
+                    pb.inc(1);
+                }
+                let m = last.expect("at least one repeat");
+                let ms_per_step = median(&mut ms);
+                let error = match reference {
+                    Some(r) => (m.figure - r).abs(),
+                    None => m.figure,
+                };
+                let row = Row {
+                    scene: scene.name(),
+                    engine,
+                    settings: s,
+                    bodies: m.bodies,
+                    steps: m.steps,
+                    ms_per_step,
+                    ms_per_sim_second: ms_per_step * f64::from(s.hz),
+                    figure: m.figure,
+                    error,
+                };
+                on_row(&row);
+                rows.push(row);
+            }
+        }
+    }
+    pb.finish_and_clear();
+    Ok(rows)
+}

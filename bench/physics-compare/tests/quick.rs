@@ -1,0 +1,81 @@
+//! Smoke test of the harness: the `--quick` path on three scenes produces CSV rows, a
+//! Markdown summary and PNG plots with finite figures. No timing asserts.
+
+use onyx_physics_bench::{run, Options};
+
+#[test]
+fn quick_run_writes_csv_markdown_and_plots_with_finite_figures() {
+    let dir = tempfile::tempdir().expect("temp dir");
+    let opts = Options::parse(
+        [
+            "--quick",
+            "--no-progress",
+            "--scenes",
+            "free_fall,stack,tunneling",
+            "--out",
+        ]
+        .iter()
+        .map(|s| (*s).to_string())
+        .chain([dir.path().display().to_string()]),
+    )
+    .expect("options parse");
+    let report = run(&opts, false).expect("quick run");
+
+    // 3 scenes × 2 engines × (2 rates × 2 iteration counts).
+    assert_eq!(report.rows.len(), 24, "rows: {}", report.rows.len());
+    for r in &report.rows {
+        assert!(
+            r.error.is_finite() && r.figure.is_finite() && r.ms_per_step.is_finite(),
+            "non-finite figure in {r:?}"
+        );
+        assert!(r.ms_per_step >= 0.0 && r.bodies > 0 && r.steps > 0, "{r:?}");
+    }
+
+    let csv = std::fs::read_to_string(&report.csv).expect("csv");
+    let lines: Vec<&str> = csv.lines().collect();
+    assert_eq!(lines.len(), 25, "CSV header + 24 rows, got {}", lines.len());
+    assert!(lines[0].starts_with("scene,engine,hz,iterations"));
+    for l in &lines[1..] {
+        assert_eq!(l.split(',').count(), 10, "CSV row {l:?}");
+    }
+
+    let md = std::fs::read_to_string(&report.markdown).expect("markdown");
+    for s in [
+        "## free_fall",
+        "## stack",
+        "## tunneling",
+        "Pareto front, onyx",
+    ] {
+        assert!(md.contains(s), "summary.md lacks {s:?}");
+    }
+
+    assert_eq!(report.plots.len(), 3);
+    for p in &report.plots {
+        let bytes = std::fs::read(p).expect("png");
+        assert!(
+            bytes.len() > 1000 && bytes.starts_with(b"\x89PNG"),
+            "{} is not a PNG ({} bytes)",
+            p.display(),
+            bytes.len()
+        );
+    }
+
+    // The analytic free-fall error of semi-implicit Euler is g·t·dt/2 (0.16 m at 60 Hz, one
+    // substep): a sanity check that the harness measures what it says, loose bound.
+    let ff = report
+        .rows
+        .iter()
+        .find(|r| r.scene == "free_fall" && r.settings.hz == 60.0 && r.settings.iterations == 1)
+        .expect("free_fall row");
+    assert!(
+        ff.error < 0.2,
+        "free-fall error {} m, expected < 0.2",
+        ff.error
+    );
+}
+
+#[test]
+fn unknown_scene_is_an_error() {
+    let opts = Options::parse(["--scenes".to_string(), "nope".to_string()]).expect("parses");
+    assert!(opts.selected().is_err());
+}
