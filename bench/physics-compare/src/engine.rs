@@ -1,7 +1,7 @@
 //! The [`Engine`] trait: one interface over Onyx physics and rapier3d so a scene is written
 //! once and built in both.
 
-use onyx_physics::glam::Vec3;
+use onyx_physics::glam::{Quat, Vec3};
 use rapier3d::prelude as rp;
 
 /// Which engine.
@@ -66,6 +66,8 @@ pub enum ShapeSpec {
     Sphere(f32),
     /// Box of these half extents.
     Cuboid(Vec3),
+    /// Convex hull of these points (body-local).
+    Hull(&'static [Vec3]),
 }
 
 /// One body with one collider, engine-neutral.
@@ -75,6 +77,8 @@ pub struct BodySpec {
     pub fixed: bool,
     /// Position of the centre.
     pub position: Vec3,
+    /// Orientation.
+    pub rotation: Quat,
     /// Initial linear velocity.
     pub velocity: Vec3,
     /// Shape.
@@ -99,6 +103,7 @@ impl BodySpec {
         Self {
             fixed: false,
             position,
+            rotation: Quat::IDENTITY,
             velocity: Vec3::ZERO,
             shape,
             density: 1000.0,
@@ -131,6 +136,13 @@ impl BodySpec {
     #[must_use]
     pub fn velocity(mut self, v: Vec3) -> Self {
         self.velocity = v;
+        self
+    }
+
+    /// With this orientation.
+    #[must_use]
+    pub fn rotation(mut self, q: Quat) -> Self {
+        self.rotation = q;
         self
     }
 
@@ -192,6 +204,11 @@ pub trait Engine {
     fn mass(&self, id: BodyId) -> f32;
     /// Number of bodies.
     fn len(&self) -> usize;
+    /// Narrowphase failures so far (GJK runs that hit their cap + EPA runs that failed),
+    /// where the engine reports them; `None` otherwise.
+    fn narrowphase_failures(&self) -> Option<u64> {
+        None
+    }
     /// Whether there are no bodies.
     fn is_empty(&self) -> bool {
         self.len() == 0
@@ -202,6 +219,7 @@ pub trait Engine {
 pub struct OnyxEngine {
     world: onyx_physics::PhysicsWorld,
     bodies: Vec<onyx_physics::BodyHandle>,
+    failures: u64,
 }
 
 impl OnyxEngine {
@@ -217,6 +235,7 @@ impl OnyxEngine {
         Self {
             world: onyx_physics::PhysicsWorld::new(settings),
             bodies: Vec::new(),
+            failures: 0,
         }
     }
 
@@ -243,11 +262,15 @@ impl Engine for OnyxEngine {
                 .gravity_scale(spec.gravity_scale)
                 .can_sleep(false)
         }
-        .translation(spec.position);
+        .translation(spec.position)
+        .rotation(spec.rotation);
         let h = self.world.insert_body(desc);
         let c = match spec.shape {
             ShapeSpec::Sphere(r) => ColliderDesc::sphere(r),
             ShapeSpec::Cuboid(he) => ColliderDesc::cuboid(he.x, he.y, he.z),
+            ShapeSpec::Hull(points) => {
+                ColliderDesc::convex_hull(points).expect("scene hull points form a hull (onyx)")
+            }
         }
         .density(spec.density)
         .friction(spec.friction)
@@ -258,7 +281,8 @@ impl Engine for OnyxEngine {
     }
 
     fn step(&mut self) {
-        self.world.step();
+        let c = self.world.step().counters;
+        self.failures += u64::from(c.gjk_not_converged) + u64::from(c.epa_failures);
     }
 
     fn position(&self, id: BodyId) -> Vec3 {
@@ -291,6 +315,10 @@ impl Engine for OnyxEngine {
 
     fn len(&self) -> usize {
         self.bodies.len()
+    }
+
+    fn narrowphase_failures(&self) -> Option<u64> {
+        Some(self.failures)
     }
 }
 
@@ -338,10 +366,16 @@ impl Engine for RapierEngine {
                 .gravity_scale(spec.gravity_scale)
                 .can_sleep(false)
         }
-        .translation(rv(spec.position));
+        .translation(rv(spec.position))
+        .rotation(rv(spec.rotation.to_scaled_axis()));
         let c = match spec.shape {
             ShapeSpec::Sphere(r) => rp::ColliderBuilder::ball(r),
             ShapeSpec::Cuboid(he) => rp::ColliderBuilder::cuboid(he.x, he.y, he.z),
+            ShapeSpec::Hull(points) => {
+                let pts: Vec<rp::Vector> = points.iter().map(|&p| rv(p)).collect();
+                rp::ColliderBuilder::convex_hull(&pts)
+                    .expect("scene hull points form a hull (rapier)")
+            }
         }
         .density(spec.density)
         .friction(spec.friction)

@@ -8,13 +8,20 @@ use onyx_physics::glam::Vec3;
 
 use crate::engine::{BodyId, Engine, StepSettings};
 
+pub mod big_pyramid;
 pub mod bounce;
+pub mod degenerate_hulls;
 pub mod far_origin;
 pub mod free_fall;
+pub mod incline;
+pub mod long_run;
 pub mod mass_ratio;
+pub mod poured_spheres;
 pub mod pyramid;
+pub mod rolling;
 pub mod sliding;
 pub mod stack;
+pub mod tiny_huge;
 pub mod tunneling;
 
 /// Problem size: `Quick` for the smoke path, `Full` for the real comparison.
@@ -73,6 +80,13 @@ pub fn all() -> Vec<&'static dyn Scene> {
         &tunneling::Tunneling,
         &far_origin::FarOrigin,
         &mass_ratio::MassRatio,
+        &incline::Incline,
+        &rolling::Rolling,
+        &long_run::LongRun,
+        &tiny_huge::TinyHuge,
+        &big_pyramid::BigPyramid,
+        &poured_spheres::PouredSpheres,
+        &degenerate_hulls::DegenerateHulls,
     ]
 }
 
