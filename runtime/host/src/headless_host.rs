@@ -56,10 +56,7 @@ impl HeadlessHost {
             host,
             frame_time,
             render: None,
-            render_settings: onyx_render::RenderSettings {
-                shader_dir: crate::window::shader_dir(),
-                ..onyx_render::RenderSettings::deterministic()
-            },
+            render_settings: crate::render::RenderSystem::offscreen_settings(),
         }
     }
 

@@ -92,7 +92,13 @@ impl Host {
             path: path.to_path_buf(),
             loaded_from,
         };
-        let hash = crate::plugins::library_watcher::content_hash(path).ok();
+        // The content hash only matters to the hot-reload watcher; without one, skip reading
+        // the whole library again (it is hashed when watching starts).
+        let hash = self
+            .watcher
+            .is_some()
+            .then(|| crate::plugins::library_watcher::content_hash(path).ok())
+            .flatten();
         self.attach(name.clone(), origin, instance, hash)?;
         self.watch_new_plugin(path, hash);
         Ok(name)

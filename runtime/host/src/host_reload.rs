@@ -29,12 +29,16 @@ impl Host {
             return Ok(());
         }
         let mut watcher = LibraryWatcher::new()?;
-        for slot in &self.plugins {
-            if let (PluginOrigin::Library { path, .. }, Some(hash)) =
-                (&slot.origin, slot.content_hash)
-            {
-                watcher.watch(path, hash)?;
-            }
+        for slot in &mut self.plugins {
+            let PluginOrigin::Library { path, .. } = &slot.origin else {
+                continue;
+            };
+            let hash = match slot.content_hash {
+                Some(hash) => hash,
+                None => content_hash(path).map_err(notify::Error::io)?,
+            };
+            slot.content_hash = Some(hash);
+            watcher.watch(path, hash)?;
         }
         self.watcher = Some(watcher);
         Ok(())

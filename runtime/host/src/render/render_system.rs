@@ -100,6 +100,15 @@ impl RenderSystem {
         }
     }
 
+    /// Settings for offscreen images: deterministic (MSAA off, so the same scene gives the
+    /// same pixels), shaders from the source checkout's `shaders/` folder when there is one.
+    pub fn offscreen_settings() -> RenderSettings {
+        RenderSettings {
+            shader_dir: crate::window::shader_dir(),
+            ..RenderSettings::deterministic()
+        }
+    }
+
     /// A render system on an adapter chosen from the environment, for offscreen drawing.
     pub fn new_headless(settings: RenderSettings) -> Result<Self, RendererInitError> {
         Renderer::new_headless(settings).map(Self::new)

@@ -8,12 +8,11 @@ use std::process::ExitCode;
 
 use anyhow::Context as _;
 use clap::Parser;
-use onyx_render::RenderSettings;
 use onyx_runtime::clock::ClockSettings;
 use onyx_runtime::plugins::{plugin_search, PluginSearchPath};
 use onyx_runtime::render::{save_png, RenderSystem};
 use onyx_runtime::scene::write_atomically;
-use onyx_runtime::window::{run_windowed, shader_dir, WindowOptions};
+use onyx_runtime::window::{run_windowed, WindowOptions};
 use onyx_runtime::{Host, HostConfig, PluginStatus};
 
 use cli::{Cli, Command, HostArgs, RunArgs};
@@ -169,13 +168,7 @@ fn screenshot(
 ) -> anyhow::Result<()> {
     let mut system = match render {
         Some(system) => system,
-        None => {
-            let settings = RenderSettings {
-                shader_dir: shader_dir(),
-                ..RenderSettings::deterministic()
-            };
-            RenderSystem::new_headless(settings)?
-        }
+        None => RenderSystem::new_headless(RenderSystem::offscreen_settings())?,
     };
     let image = host.render_image(&mut system, width, height)?;
     save_png(&image, path)?;
