@@ -6,6 +6,8 @@ use crate::__ffi::{BlobFfi, BuiltinFfi, BuiltinId, HostRef, PluginOpFfi, RayFfi}
 use crate::component::component_type::{decode, BundleParts};
 use crate::glam::Vec3;
 use crate::host::PhysicsCommand;
+mod tool_calls;
+
 use crate::{
     BlobFormat, Bundle, Component, ComponentType, CtxError, DebugLine, Entity, EntityTransform,
     InputState, LogLevel, MeshId, Message, RayHit, TextureId, Time,

@@ -47,6 +47,10 @@
 //! - `input/`: [`Key`], [`MouseButton`], [`InputState`].
 //! - [`Time`] (`time.rs`), [`Flow`] (`flow.rs`), [`LogLevel`] (`log_level.rs`),
 //!   [`state`] (save/load helpers for hot reload).
+//! - [`tools`]: what tools (the editor) read through `Ctx`: entity lists, components as
+//!   JSON, plugins, diagnostics, console lines, play mode, [`Script`]s, view switches.
+//! - [`gui`]: egui across the boundary — [`Plugin::draw_gui`] gets a root [`egui::Ui`];
+//!   [`gui::VIEWPORT_TEXTURE`] / [`gui::viewport`] show the scene inside the UI.
 //! - [`host`]: for the host runtime only (loading libraries, serving `Ctx`).
 //!
 //! ## Conventions
@@ -73,12 +77,14 @@ mod entity;
 pub mod event;
 mod export;
 mod flow;
+pub mod gui;
 pub mod host;
 pub mod input;
 mod log_level;
 mod plugin;
 pub mod state;
 mod time;
+pub mod tools;
 
 /// The README's examples, compiled as doctests.
 #[cfg(doctest)]
@@ -92,6 +98,7 @@ pub mod __ffi;
 pub use component::*;
 pub use ctx::Ctx;
 pub use ctx_error::CtxError;
+pub use egui;
 pub use entity::Entity;
 pub use event::*;
 pub use flow::Flow;
@@ -100,3 +107,4 @@ pub use input::*;
 pub use log_level::LogLevel;
 pub use plugin::{AttachInfo, Plugin, PluginError};
 pub use time::Time;
+pub use tools::{PlayMode, Script, ScriptCall, ScriptPhase};

@@ -13,7 +13,9 @@ pub type PluginError = Box<dyn std::error::Error + Send + Sync + 'static>;
 /// 1. `on_attach` once when the plugin is loaded (or reloaded: see [`AttachInfo::reload`]);
 /// 2. `on_init` once, after every plugin given at start-up is attached;
 /// 3. each frame: `on_event` for each pending event, `on_fixed_update` 0..N times (one per
-///    fixed step), `on_update` once, `on_render` once, `draw_gui` once;
+///    fixed step), `on_update` once, `on_script` for each entity running a script this
+///    plugin registered (while playing), `on_render` once, `draw_gui` once (only if
+///    overridden);
 ///    `on_resize` when the window changes size;
 /// 4. `on_detach` once, when the host quits or unloads the plugin.
 ///
@@ -43,8 +45,36 @@ pub trait Plugin: Send + 'static {
     /// Once per frame, after `on_update`: submit what to draw.
     fn on_render(&mut self, ctx: &mut Ctx) {}
 
-    /// Once per frame, after `on_render`: draw user interface.
-    fn draw_gui(&mut self, ctx: &mut Ctx) {}
+    /// Once per frame, after `on_render`: draw user interface with [egui](crate::egui) into
+    /// `ui`, the root of the whole window (use `ui.ctx()` for floating windows). The plugin
+    /// has its own egui context; what it draws is rendered over the scene, and input its UI
+    /// takes (pointer over its areas, keys while a text field has focus) does not reach the
+    /// scene. Show the scene inside the UI with [`gui::viewport`](crate::gui::viewport).
+    ///
+    /// ```
+    /// use onyx_plugin_api::{egui, Ctx, Name, Plugin, Transform};
+    ///
+    /// struct Spawner;
+    /// impl Plugin for Spawner {
+    ///     fn draw_gui(&mut self, ctx: &mut Ctx, ui: &mut egui::Ui) {
+    ///         egui::Window::new("Tools").show(ui.ctx(), |ui| {
+    ///             if ui.button("Spawn").clicked() {
+    ///                 ctx.spawn((Name::new("box"), Transform::IDENTITY)).ok();
+    ///             }
+    ///         });
+    ///     }
+    /// }
+    /// ```
+    ///
+    /// A plugin that keeps this default costs nothing per frame: no egui runs for it.
+    fn draw_gui(&mut self, ctx: &mut Ctx, ui: &mut egui::Ui) {
+        crate::__ffi::mark_no_gui();
+    }
+
+    /// A script this plugin registered ([`Ctx::register_script`]) runs on an entity: once
+    /// `Created`, each frame `Update` while playing, and `Destroyed` at the end. See
+    /// [`ScriptCall`](crate::ScriptCall).
+    fn on_script(&mut self, ctx: &mut Ctx, call: &crate::ScriptCall) {}
 
     /// The window's drawable area changed to `width` × `height` physical pixels.
     fn on_resize(&mut self, ctx: &mut Ctx, width: u32, height: u32) {}

@@ -119,7 +119,7 @@ impl Plugin for Recorder {
     fn on_render(&mut self, _: &mut Ctx) {
         self.note("on_render");
     }
-    fn draw_gui(&mut self, _: &mut Ctx) {
+    fn draw_gui(&mut self, _: &mut Ctx, _: &mut onyx_plugin_api::egui::Ui) {
         self.note("draw_gui");
     }
     fn on_resize(&mut self, _: &mut Ctx, w: u32, h: u32) {

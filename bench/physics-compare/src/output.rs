@@ -5,7 +5,9 @@ use std::path::{Path, PathBuf};
 
 use plotters::prelude::*;
 
-use crate::engine::EngineKind;
+use onyx_physics::PhysicsPreset;
+
+use crate::engine::{EngineKind, StepSettings};
 use crate::runner::Row;
 use crate::scenes;
 
@@ -105,6 +107,7 @@ pub fn write_markdown(rows: &[Row], dir: &Path, quick: bool) -> anyhow::Result<P
          (or the ideal zero of a drift figure).\n",
         if quick { "quick" } else { "full" }
     );
+    write_preset_summary(&mut s, rows);
     let names: Vec<&str> = {
         let mut n: Vec<&str> = Vec::new();
         for r in rows {
@@ -135,15 +138,16 @@ pub fn write_markdown(rows: &[Row], dir: &Path, quick: bool) -> anyhow::Result<P
         }
         let _ = writeln!(
             s,
-            "\n| engine | Hz | it | bodies | ms/step | ms/sim-s | error |\n|---|---:|---:|---:|---:|---:|---:|"
+            "\n| engine | Hz | it | preset | bodies | ms/step | ms/sim-s | error |\n|---|---:|---:|---|---:|---:|---:|---:|"
         );
         for r in rows.iter().filter(|r| r.scene == name) {
             let _ = writeln!(
                 s,
-                "| {} | {} | {} | {} | {:.4} | {:.3} | {:.3e} |",
+                "| {} | {} | {} | {} | {} | {:.4} | {:.3} | {:.3e} |",
                 r.engine.name(),
                 r.settings.hz,
                 r.settings.iterations,
+                preset_at(r.settings).map_or("", PhysicsPreset::name),
                 r.bodies,
                 r.ms_per_step,
                 r.ms_per_sim_second,
@@ -155,6 +159,74 @@ pub fn write_markdown(rows: &[Row], dir: &Path, quick: bool) -> anyhow::Result<P
     let p = dir.join("summary.md");
     std::fs::write(&p, s)?;
     Ok(p)
+}
+
+/// The Onyx preset whose step rate and substeps are `s`, if any.
+#[must_use]
+pub fn preset_at(s: StepSettings) -> Option<PhysicsPreset> {
+    PhysicsPreset::ALL
+        .into_iter()
+        .find(|p| p.step_hz() == s.hz && p.substeps() == s.iterations)
+}
+
+/// The "Presets" section: per scene, each preset's cost and error in Onyx next to rapier at
+/// the same step rate and iteration count, with the cost ratio.
+fn write_preset_summary(s: &mut String, rows: &[Row]) {
+    let presets: Vec<PhysicsPreset> = PhysicsPreset::ALL
+        .into_iter()
+        .filter(|p| rows.iter().any(|r| preset_at(r.settings) == Some(*p)))
+        .collect();
+    if presets.is_empty() {
+        return;
+    }
+    let _ = writeln!(
+        s,
+        "## Presets\n\nEach preset is one point of the sweep; rapier is run at the same step \
+         rate with as many solver iterations as Onyx has substeps. Cost in ms per simulated \
+         second; `×` is Onyx cost / rapier cost (below 1: Onyx is faster).\n"
+    );
+    let mut header = String::from("| scene |");
+    let mut rule = String::from("|---|");
+    for p in &presets {
+        let _ = write!(
+            header,
+            " {0} onyx ms | {0} onyx err | {0} rapier ms | {0} rapier err | {0} × |",
+            p.name()
+        );
+        rule.push_str("---:|---:|---:|---:|---:|");
+    }
+    let _ = writeln!(s, "{header}\n{rule}");
+    let mut names: Vec<&str> = Vec::new();
+    for r in rows {
+        if !names.contains(&r.scene) {
+            names.push(r.scene);
+        }
+    }
+    for name in names {
+        let _ = write!(s, "| {name} |");
+        for p in &presets {
+            let find = |e: EngineKind| {
+                rows.iter()
+                    .find(|r| r.scene == name && r.engine == e && preset_at(r.settings) == Some(*p))
+            };
+            match (find(EngineKind::Onyx), find(EngineKind::Rapier)) {
+                (Some(o), Some(r)) => {
+                    let _ = write!(
+                        s,
+                        " {:.3} | {:.3e} | {:.3} | {:.3e} | {:.2} |",
+                        o.ms_per_sim_second,
+                        o.error,
+                        r.ms_per_sim_second,
+                        r.error,
+                        o.ms_per_sim_second / r.ms_per_sim_second
+                    );
+                }
+                _ => s.push_str(" | | | | |"),
+            }
+        }
+        s.push('\n');
+    }
+    s.push('\n');
 }
 
 /// Registers a system sans-serif font for plot text; false when none is found (plots are

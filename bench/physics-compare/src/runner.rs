@@ -19,6 +19,24 @@ pub struct Options {
     pub out: PathBuf,
     /// Show a progress bar (on stderr).
     pub progress: bool,
+    /// Step rates swept instead of the mode's.
+    pub rates: Option<Vec<f32>>,
+    /// Substeps / iterations swept instead of the mode's.
+    pub iterations: Option<Vec<u32>>,
+    /// Timed repetitions instead of the mode's.
+    pub repeats: Option<usize>,
+}
+
+fn list<T: std::str::FromStr>(flag: &str, value: Option<String>) -> anyhow::Result<Vec<T>> {
+    let value = value.ok_or_else(|| anyhow::anyhow!("{flag} needs a comma-separated list"))?;
+    value
+        .split(',')
+        .map(|v| {
+            v.trim()
+                .parse::<T>()
+                .map_err(|_| anyhow::anyhow!("{flag}: {v:?} is not a number"))
+        })
+        .collect()
 }
 
 impl Default for Options {
@@ -28,6 +46,9 @@ impl Default for Options {
             scenes: None,
             out: PathBuf::from("target/physics-compare"),
             progress: true,
+            rates: None,
+            iterations: None,
+            repeats: None,
         }
     }
 }
@@ -44,6 +65,12 @@ impl Options {
             match a.as_str() {
                 "--quick" => o.quick = true,
                 "--no-progress" => o.progress = false,
+                "--rates" => o.rates = Some(list("--rates", it.next())?),
+                "--iterations" => o.iterations = Some(list("--iterations", it.next())?),
+                "--repeats" => {
+                    let n: Vec<usize> = list("--repeats", it.next())?;
+                    o.repeats = n.first().copied().filter(|n| *n > 0);
+                }
                 "--scenes" => {
                     let v = it
                         .next()
@@ -58,8 +85,9 @@ impl Options {
                 }
                 "-h" | "--help" => {
                     anyhow::bail!(
-                        "usage: onyx-physics-bench [--quick] [--scenes a,b] [--out DIR] \
-                         [--no-progress]\nscenes: {}",
+                        "usage: onyx-physics-bench [--quick] [--scenes a,b] [--rates 30,60] \
+                         [--iterations 1,4] [--repeats N] [--out DIR] [--no-progress]\n\
+                         scenes: {}",
                         scenes::all()
                             .iter()
                             .map(|s| s.name())
@@ -86,6 +114,9 @@ impl Options {
     /// Step rates swept.
     #[must_use]
     pub fn rates(&self) -> Vec<f32> {
+        if let Some(r) = &self.rates {
+            return r.clone();
+        }
         if self.quick {
             vec![60.0, 120.0]
         } else {
@@ -96,6 +127,9 @@ impl Options {
     /// Substeps (Onyx) / solver iterations (rapier) swept.
     #[must_use]
     pub fn iterations(&self) -> Vec<u32> {
+        if let Some(i) = &self.iterations {
+            return i.clone();
+        }
         if self.quick {
             vec![1, 4]
         } else {
@@ -106,6 +140,9 @@ impl Options {
     /// Timed repetitions of each run (median taken).
     #[must_use]
     pub fn repeats(&self) -> usize {
+        if let Some(n) = self.repeats {
+            return n;
+        }
         if self.quick {
             1
         } else {

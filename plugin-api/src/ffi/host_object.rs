@@ -10,12 +10,15 @@ use std::panic::{catch_unwind, AssertUnwindSafe};
 
 use abi_stable::{
     sabi_trait,
-    std_types::{ROption, RResult, RSlice, RSliceMut, RStr, RVec},
+    std_types::{ROption, RResult, RSlice, RSliceMut, RStr, RString, RVec},
 };
 
 use super::{BlobFfi, BuiltinFfi, BuiltinId, CtxErrorFfi, EntityBlobFfi};
+use super::{ComponentOpFfi, EntityListFfi, ReportFfi, SceneOpFfi, ScreenPointFfi};
 use crate::host::PhysicsCommand;
+use crate::host::PlayCommand;
 use crate::host::{HostServices, PluginRequest};
+use crate::tools::{PlayMode, RenderOverrides};
 use crate::{
     CtxError, DebugLine, Entity, EntityTransform, InputState, LogLevel, MeshId, RayHit, TextureId,
     Time,
@@ -61,6 +64,28 @@ pub trait HostObject {
         command: PhysicsCommand,
     ) -> RResult<(), CtxErrorFfi>;
     fn raycast(&mut self, ray: RayFfi) -> ROption<RayHit>;
+    // ----- tool services (appended; see `host::ToolServices`) -----
+    fn entity_list(&mut self) -> EntityListFfi;
+    fn host_report(&mut self, report: ReportFfi, argument: u64) -> RResult<RVec<u8>, CtxErrorFfi>;
+    fn edit_component(
+        &mut self,
+        entity: Entity,
+        op: ComponentOpFfi,
+        type_name: RStr<'_>,
+        value: RStr<'_>,
+    ) -> RResult<(), CtxErrorFfi>;
+    fn scene_op(&mut self, op: SceneOpFfi, path: RStr<'_>) -> RResult<(), CtxErrorFfi>;
+    fn scene_path(&mut self) -> ROption<RString>;
+    fn play_command(&mut self, command: PlayCommand);
+    fn play_mode(&self) -> PlayMode;
+    fn register_script(
+        &mut self,
+        name: RStr<'_>,
+        default_params: RStr<'_>,
+    ) -> RResult<(), CtxErrorFfi>;
+    fn screen_ray(&mut self, point: ScreenPointFfi) -> ROption<RayFfi>;
+    fn set_render_overrides(&mut self, overrides: RenderOverrides);
+    fn render_overrides(&self) -> RenderOverrides;
 }
 
 /// A ray, as plain data.
@@ -292,6 +317,102 @@ impl<H: HostServices + ?Sized> HostObject for HostBridge<'_, H> {
                     .into()
             },
         )
+    }
+
+    fn entity_list(&mut self) -> EntityListFfi {
+        guard("entity_list", EntityListFfi::default, || {
+            self.0.entity_list().into()
+        })
+    }
+
+    fn host_report(&mut self, report: ReportFfi, argument: u64) -> RResult<RVec<u8>, CtxErrorFfi> {
+        super::tool_bridge::host_report(&mut *self.0, report, argument)
+    }
+
+    fn edit_component(
+        &mut self,
+        entity: Entity,
+        op: ComponentOpFfi,
+        type_name: RStr<'_>,
+        value: RStr<'_>,
+    ) -> RResult<(), CtxErrorFfi> {
+        let (type_name, value) = (type_name.as_str(), value.as_str());
+        result("edit_component", || match op {
+            ComponentOpFfi::Set => self.0.set_component_json(entity, type_name, value),
+            ComponentOpFfi::AddDefault => self.0.add_component(entity, type_name),
+            ComponentOpFfi::Remove => self.0.remove_component(entity, type_name),
+        })
+    }
+
+    fn scene_op(&mut self, op: SceneOpFfi, path: RStr<'_>) -> RResult<(), CtxErrorFfi> {
+        result("scene", || match op {
+            SceneOpFfi::New => self.0.new_scene(),
+            SceneOpFfi::Open => self.0.open_scene(path.as_str()),
+            SceneOpFfi::Save => self.0.save_scene(path.as_str()),
+        })
+    }
+
+    fn scene_path(&mut self) -> ROption<RString> {
+        guard(
+            "scene_path",
+            || ROption::RNone,
+            || self.0.scene_path().map(RString::from).into(),
+        )
+    }
+
+    fn play_command(&mut self, command: PlayCommand) {
+        guard("play", || (), || self.0.play_command(command))
+    }
+
+    fn play_mode(&self) -> PlayMode {
+        guard("play_mode", PlayMode::default, || self.0.play_mode())
+    }
+
+    fn register_script(
+        &mut self,
+        name: RStr<'_>,
+        default_params: RStr<'_>,
+    ) -> RResult<(), CtxErrorFfi> {
+        result("register_script", || {
+            let params =
+                serde_json::from_str(default_params.as_str()).map_err(|e| CtxError::Decode {
+                    component: format!("default parameters of script `{}`", name.as_str()),
+                    message: e.to_string(),
+                })?;
+            self.0.register_script(name.as_str(), params)
+        })
+    }
+
+    fn screen_ray(&mut self, point: ScreenPointFfi) -> ROption<RayFfi> {
+        let (at, size) = (point.at.into(), point.size.into());
+        guard(
+            "screen_ray",
+            || ROption::RNone,
+            || {
+                self.0
+                    .screen_ray(at, size)
+                    .map(|ray| RayFfi {
+                        origin: ray.origin.to_array(),
+                        direction: ray.direction.to_array(),
+                        max_distance: f32::INFINITY,
+                    })
+                    .into()
+            },
+        )
+    }
+
+    fn set_render_overrides(&mut self, overrides: RenderOverrides) {
+        guard(
+            "set_render_overrides",
+            || (),
+            || self.0.set_render_overrides(overrides),
+        )
+    }
+
+    fn render_overrides(&self) -> RenderOverrides {
+        guard("render_overrides", RenderOverrides::default, || {
+            self.0.render_overrides()
+        })
     }
 }
 

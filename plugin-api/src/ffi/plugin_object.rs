@@ -13,7 +13,9 @@ use abi_stable::{
     std_types::{RBox, RResult, RSlice, RStr, RString, RVec},
 };
 
-use super::{AttachInfoFfi, CallFailure, EventFfi, FailureKind, HostRef};
+use super::gui_ffi::{GuiInputFfi, GuiOutputFfi};
+use super::plugin_gui::PluginGui;
+use super::{AttachInfoFfi, CallFailure, EventFfi, FailureKind, HostRef, ScriptCallFfi};
 use crate::{AttachInfo, Ctx, Event, Flow, Plugin};
 
 #[sabi_trait]
@@ -29,7 +31,11 @@ pub trait PluginObject: Send {
     fn on_fixed_update<'a>(&mut self, host: HostRef<'a>) -> RResult<(), CallFailure>;
     fn on_update<'a>(&mut self, host: HostRef<'a>, dt: f32) -> RResult<Flow, CallFailure>;
     fn on_render<'a>(&mut self, host: HostRef<'a>) -> RResult<(), CallFailure>;
-    fn draw_gui<'a>(&mut self, host: HostRef<'a>) -> RResult<(), CallFailure>;
+    fn draw_gui<'a>(
+        &mut self,
+        host: HostRef<'a>,
+        input: GuiInputFfi<'a>,
+    ) -> RResult<GuiOutputFfi, CallFailure>;
     fn on_resize<'a>(
         &mut self,
         host: HostRef<'a>,
@@ -39,6 +45,11 @@ pub trait PluginObject: Send {
     fn on_detach<'a>(&mut self, host: HostRef<'a>) -> RResult<(), CallFailure>;
     fn save_state(&mut self) -> RResult<RVec<u8>, CallFailure>;
     fn load_state(&mut self, state: RSlice<'_, u8>) -> RResult<(), CallFailure>;
+    fn on_script<'a>(
+        &mut self,
+        host: HostRef<'a>,
+        call: ScriptCallFfi<'a>,
+    ) -> RResult<(), CallFailure>;
 }
 
 /// An owned plugin object.
@@ -103,10 +114,12 @@ fn returned(error: impl std::fmt::Display) -> CallFailure {
     }
 }
 
-/// Holds a safe [`Plugin`] and exposes it as a [`PluginObject`].
+/// Holds a safe [`Plugin`] and exposes it as a [`PluginObject`], with the plugin's own
+/// egui context.
 pub struct PluginAdapter<P> {
     pub plugin: P,
     pub name: &'static str,
+    pub gui: PluginGui,
 }
 
 impl<P: Plugin> PluginObject for PluginAdapter<P> {
@@ -147,8 +160,16 @@ impl<P: Plugin> PluginObject for PluginAdapter<P> {
         catch(|| self.plugin.on_render(&mut Ctx::new(host)))
     }
 
-    fn draw_gui<'a>(&mut self, host: HostRef<'a>) -> RResult<(), CallFailure> {
-        catch(|| self.plugin.draw_gui(&mut Ctx::new(host)))
+    fn draw_gui<'a>(
+        &mut self,
+        host: HostRef<'a>,
+        input: GuiInputFfi<'a>,
+    ) -> RResult<GuiOutputFfi, CallFailure> {
+        let Self { plugin, gui, .. } = self;
+        catch(|| {
+            let mut ctx = Ctx::new(host);
+            gui.run(input, |ui| plugin.draw_gui(&mut ctx, ui))
+        })
     }
 
     fn on_resize<'a>(
@@ -171,6 +192,17 @@ impl<P: Plugin> PluginObject for PluginAdapter<P> {
     fn load_state(&mut self, state: RSlice<'_, u8>) -> RResult<(), CallFailure> {
         catch(|| self.plugin.load_state(state.as_slice())).and_then(|r| r.map_err(returned).into())
     }
+
+    fn on_script<'a>(
+        &mut self,
+        host: HostRef<'a>,
+        call: ScriptCallFfi<'a>,
+    ) -> RResult<(), CallFailure> {
+        catch(|| {
+            let call = crate::ScriptCall::from(call);
+            self.plugin.on_script(&mut Ctx::new(host), &call)
+        })
+    }
 }
 
 /// Builds the plugin with `make` (inside `catch_unwind`) and boxes it as a [`PluginBox`].
@@ -183,6 +215,7 @@ pub fn new_plugin_box<P: Plugin>(
             PluginAdapter {
                 plugin: make(),
                 name,
+                gui: PluginGui::default(),
             },
             abi_stable::sabi_trait::TD_Opaque,
         )

@@ -13,8 +13,9 @@ use crate::{
 ///
 /// Implementations must not panic (a panic is caught and turned into an error, but it is a
 /// host bug). Every method that changes the world validates its input and returns a
-/// [`CtxError`] instead of writing bad data.
-pub trait HostServices {
+/// [`CtxError`] instead of writing bad data. The tool services (editor) are the supertrait
+/// [`ToolServices`](crate::host::ToolServices), defaulted.
+pub trait HostServices: crate::host::ToolServices {
     /// Name of the plugin being called.
     fn plugin_name(&self) -> &str;
     /// Logs `message` at `level` on behalf of the plugin.

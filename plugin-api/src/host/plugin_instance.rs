@@ -3,8 +3,10 @@
 use abi_stable::sabi_trait::TD_Opaque;
 use abi_stable::std_types::{RSlice, RStr, Tuple2};
 
-use crate::__ffi::{new_plugin_box, AttachInfoFfi, EventFfi, HostBridge, HostObject_TO, PluginBox};
-use crate::host::{CallError, HostServices};
+use crate::__ffi::{
+    new_plugin_box, AttachInfoFfi, EventFfi, GuiInputFfi, HostBridge, HostObject_TO, PluginBox,
+};
+use crate::host::{CallError, GuiInput, GuiOutput, HostServices};
 use crate::{AttachInfo, Event, Flow, Plugin};
 
 /// A plugin object, from a library or from an in-process value — both go through the same
@@ -104,9 +106,20 @@ impl PluginInstance {
         with_host!(host, |h| self.object.on_render(h))
     }
 
-    /// Calls `draw_gui`.
-    pub fn draw_gui<H: HostServices + ?Sized>(&mut self, host: &mut H) -> Result<(), CallError> {
-        with_host!(host, |h| self.object.draw_gui(h))
+    /// Runs one GUI frame of the plugin (`draw_gui` inside its own egui context). `None`: the
+    /// plugin does not override `draw_gui` — it will answer `None` for good, so stop calling.
+    pub fn draw_gui<H: HostServices + ?Sized>(
+        &mut self,
+        host: &mut H,
+        input: &GuiInput,
+    ) -> Result<Option<GuiOutput>, CallError> {
+        let json = input.to_json();
+        let input = GuiInputFfi {
+            raw_input_json: RSlice::from_slice(&json),
+            accesskit: input.accesskit,
+        };
+        let output = with_host!(host, |h| self.object.draw_gui(h, input))?;
+        Ok(output.active.then(|| GuiOutput::from(output)))
     }
 
     /// Calls `on_resize`.
@@ -122,6 +135,23 @@ impl PluginInstance {
     /// Calls `on_detach`.
     pub fn on_detach<H: HostServices + ?Sized>(&mut self, host: &mut H) -> Result<(), CallError> {
         with_host!(host, |h| self.object.on_detach(h))
+    }
+
+    /// Calls `on_script` for one entity's script.
+    pub fn on_script<H: HostServices + ?Sized>(
+        &mut self,
+        host: &mut H,
+        call: &crate::ScriptCall,
+    ) -> Result<(), CallError> {
+        let params = call.params.to_string();
+        let ffi = crate::__ffi::ScriptCallFfi {
+            entity: call.entity,
+            phase: call.phase,
+            name: call.name.as_str().into(),
+            params: params.as_str().into(),
+            dt: call.dt,
+        };
+        with_host!(host, |h| self.object.on_script(h, ffi))
     }
 
     /// Calls `save_state`.

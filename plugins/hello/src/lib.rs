@@ -102,7 +102,7 @@ impl Plugin for Hello {
         Self::first(ctx, self.stats.renders, "on_render");
     }
 
-    fn draw_gui(&mut self, ctx: &mut Ctx) {
+    fn draw_gui(&mut self, ctx: &mut Ctx, _ui: &mut onyx_plugin_api::egui::Ui) {
         self.stats.gui += 1;
         Self::first(ctx, self.stats.gui, "draw_gui");
         self.publish(ctx);

@@ -2,7 +2,9 @@
 
 use std::path::Path;
 
-use onyx_plugin_api::{Entity, Event, Name, Plugin};
+use onyx_plugin_api::{
+    egui, Entity, Event, InputEvent, Key, MouseButton, Name, Plugin, WindowEvent,
+};
 
 use crate::plugins::{PluginLoadError, PluginStatus};
 use crate::scene::SceneError;
@@ -10,7 +12,8 @@ use crate::world::entity_id::to_api;
 use crate::{FrameReport, Host, HostConfig};
 
 /// A [`Host`] stepped by hand with a fixed frame time (one fixed step per frame by default),
-/// so runs are deterministic.
+/// so runs are deterministic. Creating one installs the console's `tracing` layer when no
+/// global subscriber is set, so `Ctx::log_lines_since` works in tests.
 ///
 /// ```
 /// use onyx_runtime::HeadlessHost;
@@ -50,7 +53,10 @@ impl HeadlessHost {
 
     /// A headless host with `config`; each frame lasts one fixed step.
     pub fn with_config(config: HostConfig) -> Self {
-        let host = Host::new(config);
+        crate::console::install_default();
+        let mut host = Host::new(config);
+        // Tests find widgets by label: plugins build their AccessKit tree.
+        host.gui_mut().set_accesskit(true);
         let frame_time = host.clock_ref_fixed_delta();
         Self {
             host,
@@ -184,6 +190,78 @@ impl HeadlessHost {
             }
         };
         self.host.render_image(system, width, height)
+    }
+
+    // ----- GUI -----
+
+    /// Sets the size of the pretend window the plugins' GUIs lay out in, pixels (default
+    /// 1280 × 720; a screenshot of another size shows the top-left part). Plugins get a
+    /// resize event at the next frame.
+    pub fn set_window_size(&mut self, width: u32, height: u32) {
+        self.host.push_event(WindowEvent::Resized { width, height });
+    }
+
+    /// Queues the pointer moving to `pos` (GUI points; pixels at the headless scale of 1).
+    pub fn pointer_move(&mut self, pos: egui::Pos2) {
+        let scale = self.host.gui().input().pixels_per_point();
+        self.host.push_event(InputEvent::CursorMoved {
+            x: pos.x * scale,
+            y: pos.y * scale,
+        });
+    }
+
+    /// Clicks the left button at `pos` (GUI points) as a person would: moves there, presses,
+    /// releases, one frame each (3 frames).
+    pub fn click_at(&mut self, pos: egui::Pos2) {
+        self.pointer_move(pos);
+        self.step(1);
+        for pressed in [true, false] {
+            self.host.push_event(InputEvent::MouseButton {
+                button: MouseButton::Left,
+                pressed,
+            });
+            self.step(1);
+        }
+    }
+
+    /// Clicks the centre of the widget labelled `label` (see [`HeadlessHost::find_widget`]).
+    /// Returns `false`, clicking nothing, when no plugin shows such a widget.
+    pub fn click_widget(&mut self, label: &str) -> bool {
+        match self.find_widget(label) {
+            Some(rect) => {
+                self.click_at(rect.center());
+                true
+            }
+            None => false,
+        }
+    }
+
+    /// Presses and releases `key` (one frame later the UI has seen both).
+    pub fn press_key(&mut self, key: Key) {
+        for pressed in [true, false] {
+            self.host.push_event(InputEvent::Key {
+                key,
+                pressed,
+                repeat: false,
+            });
+        }
+    }
+
+    /// Types `text` (into the focused text field, if a plugin's UI has one).
+    pub fn type_text(&mut self, text: &str) {
+        self.host.push_event(InputEvent::Text(text.to_owned()));
+    }
+
+    /// The screen rectangle (GUI points) of the widget labelled `label` — a button's text,
+    /// a label's text, a window's title — in the topmost plugin UI that shows one, as of
+    /// the last frame. Like `egui_kittest`, through the UI's AccessKit tree.
+    pub fn find_widget(&self, label: &str) -> Option<egui::Rect> {
+        self.host.find_widget(label)
+    }
+
+    /// Whether the pointer is over a plugin's UI (so clicks go to the UI, not the scene).
+    pub fn pointer_over_gui(&self) -> bool {
+        self.host.gui().pointer_over_gui()
     }
 
     /// Detaches every plugin (also done on drop).

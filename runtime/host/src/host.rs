@@ -29,8 +29,8 @@ pub struct FrameReport {
 ///
 /// Each frame, in order: pending events are folded into the input state and dispatched
 /// (`on_event`, plus `on_resize` for resizes) → `on_fixed_update` once per fixed step →
-/// `on_update` → `on_render` → `draw_gui`. Plugins are called in load order; `on_detach` runs
-/// in reverse load order at [`Host::shutdown`].
+/// `on_update` → scripts (`on_script`) → `on_render` → `draw_gui`. Plugins are called in
+/// load order; `on_detach` runs in reverse load order at [`Host::shutdown`].
 pub struct Host {
     pub(crate) state: HostState,
     pub(crate) plugins: Vec<PluginSlot>,
@@ -39,6 +39,7 @@ pub struct Host {
     initialized: bool,
     shut_down: bool,
     pub(crate) watcher: Option<crate::plugins::LibraryWatcher>,
+    pub(crate) gui: crate::gui::GuiSystem,
 }
 
 impl Host {
@@ -54,6 +55,7 @@ impl Host {
             initialized: false,
             shut_down: false,
             watcher: None,
+            gui: crate::gui::GuiSystem::default(),
         }
     }
 
@@ -192,6 +194,8 @@ impl Host {
         };
         let mut slot = self.plugins.remove(index);
         slot.call(&mut self.state, Stage::Detach, |p, cx| p.on_detach(cx));
+        self.gui.forget(name);
+        self.state.tools.scripts.remove_plugin(name);
         if let (Some(watcher), PluginOrigin::Library { path, .. }) =
             (&mut self.watcher, &slot.origin)
         {
@@ -237,6 +241,7 @@ impl Host {
     /// Runs one frame that took `real_dt` seconds of real time.
     pub fn frame(&mut self, real_dt: f64) -> FrameReport {
         self.init();
+        self.begin_tool_frame();
         self.poll_hot_reload();
         self.state.debug_lines.clear();
         self.dispatch_events();
@@ -250,12 +255,16 @@ impl Host {
             }
             let dt = self.state.clock.fixed_delta() as f32;
             let state = &mut self.state;
+            let physics_start = std::time::Instant::now();
+            let raised = state.pending_events.len();
             state.physics.step(
                 &mut state.world,
                 &state.assets,
                 dt,
                 &mut state.pending_events,
             );
+            state.tools.diagnostics.physics += physics_start.elapsed();
+            crate::console::trace_errors("physics", &state.pending_events[raised..]);
             self.state.clock.tick();
         }
         let dt = self.state.clock.time().delta;
@@ -266,25 +275,82 @@ impl Host {
                 self.state.quit_requested = true;
             }
         }
+        self.run_scripts(dt);
         for slot in &mut self.plugins {
             slot.call(&mut self.state, Stage::Render, |p, cx| p.on_render(cx));
         }
-        for slot in &mut self.plugins {
-            slot.call(&mut self.state, Stage::DrawGui, |p, cx| p.draw_gui(cx));
-        }
+        self.draw_gui();
         let input = self.state.input;
         self.state.orbit.control(&input);
         self.state.input.end_frame();
         self.state.clock.end_frame();
         self.apply_plugin_requests();
+        self.end_tool_frame(steps);
         FrameReport {
             fixed_steps: steps,
             quit: self.state.quit_requested,
         }
     }
 
+    /// The `DrawGui` stage: each plugin that draws a GUI runs its egui frame; plugins that
+    /// never override `draw_gui` are asked once and then skipped.
+    fn draw_gui(&mut self) {
+        if self.gui.all_inactive(self.plugins.len())
+            || !self
+                .plugins
+                .iter_mut()
+                .any(|slot| !slot.status.is_faulted() && self.gui.wants_call(&slot.name))
+        {
+            self.gui.skip_frame();
+            return;
+        }
+        let time = self.state.clock.time();
+        let input = self.gui.begin_frame(time.total, time.delta);
+        for slot in &mut self.plugins {
+            if slot.status.is_faulted() || !self.gui.wants_call(&slot.name) {
+                continue;
+            }
+            let answer = slot.call(&mut self.state, Stage::DrawGui, |p, cx| {
+                p.draw_gui(cx, &input)
+            });
+            self.gui.accept(&slot.name, answer);
+        }
+        self.gui.end_frame();
+    }
+
+    /// Plugin GUIs: input, outputs, the widgets tests look up.
+    pub fn gui(&self) -> &crate::gui::GuiSystem {
+        &self.gui
+    }
+
+    /// Plugin GUIs, mutably (window size and scale, the window's egui input, AccessKit).
+    pub fn gui_mut(&mut self) -> &mut crate::gui::GuiSystem {
+        &mut self.gui
+    }
+
+    /// The rectangle (points) of the widget labelled `label` in the topmost plugin UI that
+    /// shows one (needs `gui_mut().set_accesskit(true)` and a frame since).
+    pub fn find_widget(&self, label: &str) -> Option<egui::Rect> {
+        let order: Vec<&str> = self.plugins.iter().map(|p| p.name.as_str()).collect();
+        self.gui.find_widget(&order, label)
+    }
+
     fn dispatch_events(&mut self) {
-        let events = std::mem::take(&mut self.state.pending_events);
+        let mut events = std::mem::take(&mut self.state.pending_events);
+        // Input a plugin's UI takes (a click on its window, typing into its text field)
+        // goes to the UI only.
+        events.retain(|event| match event {
+            Event::Input(input) => self.gui.route(input),
+            Event::Window(WindowEvent::Resized { width, height }) => {
+                self.gui.input_mut().set_screen_size(*width, *height);
+                true
+            }
+            Event::Window(WindowEvent::Focused(focused)) => {
+                self.gui.input_mut().set_focused(*focused);
+                true
+            }
+            _ => true,
+        });
         for event in &events {
             match event {
                 Event::Input(input) => self.state.input.apply(input),
@@ -356,9 +422,14 @@ impl Host {
 
     /// Spawns the entities of the scene file at `path` (added to what is there). On error
     /// the world is unchanged and the error is also raised as a platform event.
+    /// A scene that sets `physics` also sets the fixed step rate and the physics settings.
     pub fn load_scene(&mut self, path: &Path) -> Result<usize, SceneError> {
         let loaded = scene::read_scene(path).and_then(|file| {
-            scene::spawn_scene(&mut self.state.world, &mut self.state.assets, &file, path)
+            let n = scene::spawn_scene(&mut self.state.world, &mut self.state.assets, &file, path)?;
+            if let Some(physics) = file.physics {
+                self.set_physics(physics);
+            }
+            Ok(n)
         });
         match &loaded {
             Ok(n) => tracing::info!(path = %path.display(), entities = n, "loaded scene"),
@@ -373,11 +444,26 @@ impl Host {
     }
 
     /// Saves the world to `path` atomically.
+    /// The physics settings chosen by a scene or [`Host::set_physics`] are saved with it.
     pub fn save_scene(&self, path: &Path) -> Result<(), SceneError> {
-        scene::write_scene(
-            &scene::scene_from_world(&self.state.world, &self.state.assets),
-            path,
-        )
+        let mut file = scene::scene_from_world(&self.state.world, &self.state.assets);
+        file.physics = self.state.physics.scene_physics().cloned();
+        scene::write_scene(&file, path)
+    }
+
+    /// Simulates with a preset and overrides from now on: sets the fixed step rate (the
+    /// physics step rate) and the physics settings. Saved with the scene.
+    pub fn set_physics(&mut self, physics: scene::ScenePhysics) {
+        if !self.state.clock.set_fixed_hz(physics.fixed_hz()) {
+            tracing::warn!(fixed_hz = physics.fixed_hz(), "invalid fixed rate ignored");
+        }
+        tracing::info!(
+            preset = %physics.preset,
+            fixed_hz = physics.fixed_hz(),
+            substeps = physics.settings().substeps,
+            "physics settings"
+        );
+        self.state.physics.set_scene_physics(physics);
     }
 
     /// Draws the world into `target` with `system` (after [`Host::frame`]).
@@ -386,7 +472,12 @@ impl Host {
         system: &mut crate::render::RenderSystem,
         target: &mut impl onyx_render::RenderTarget,
     ) -> Result<onyx_render::RenderStats, onyx_render::RenderError> {
-        system.draw(&mut self.state, target)
+        let raised = self.state.pending_events.len();
+        let stats = crate::gui::render_with_gui(system, &mut self.state, target, &self.gui);
+        crate::console::trace_errors("render", &self.state.pending_events[raised..]);
+        let stats = stats?;
+        self.record_render_stats(&stats);
+        Ok(stats)
     }
 
     /// Draws the world into a `width` × `height` image with `system`.
@@ -396,7 +487,13 @@ impl Host {
         width: u32,
         height: u32,
     ) -> Result<onyx_render::image::RgbaImage, crate::render::ScreenshotError> {
-        crate::render::render_image(system, &mut self.state, width, height)
+        let raised = self.state.pending_events.len();
+        let image =
+            crate::gui::render_image_with_gui(system, &mut self.state, width, height, &self.gui);
+        crate::console::trace_errors("render", &self.state.pending_events[raised..]);
+        let image = image?;
+        self.record_render_stats(&system.renderer().stats());
+        Ok(image)
     }
 
     /// The physics system (its settings, world and debug lines).

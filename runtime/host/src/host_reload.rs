@@ -189,6 +189,9 @@ impl Host {
             settings: slot.settings.clone(),
         };
         slot.call(&mut self.state, Stage::Detach, |p, cx| p.on_detach(cx));
+        // The new build registers its own scripts in `on_attach` (a build without one, or
+        // from an older API, must not be asked to run the old build's scripts).
+        self.state.tools.scripts.remove_plugin(&slot.name);
         let attached = {
             let mut cx = CallContext::new(&mut self.state, &slot.name);
             new.on_attach(&mut cx, &info)
@@ -214,6 +217,8 @@ impl Host {
         slot.origin = PluginOrigin::Library { path, loaded_from };
         slot.content_hash = hash;
         slot.reloads += 1;
+        // The new image builds a fresh egui context: its textures start over.
+        self.gui.forget(name);
         Ok(())
     }
 

@@ -23,19 +23,30 @@
 //! - `state_dump.rs`: the `--dump-state` JSON.
 //! - `physics/`: onyx-physics driven by `RigidBody`/`Collider` components in each fixed step.
 //! - `render/`: the world drawn with onyx-render (interpolated poses, cameras, lights, assets).
+//! - `gui/`: plugin GUIs — egui input in, meshes and textures out, painted over the scene.
 //! - `window/`: the winit window and input mapping.
+//! - Tool services (the editor's): `console/` (log ring buffer + tracing layer),
+//!   `diagnostics/` (frame and per-plugin timings), `play_mode/` (edit/play/pause/stop with a
+//!   world snapshot), `scripts/` (registered behaviours run per entity), `host_tools.rs`
+//!   (their place in the frame); `world/call_context_tools.rs` serves them to plugins.
 
 #![warn(missing_docs)]
 
 pub mod clock;
+pub mod console;
+pub mod diagnostics;
+pub mod gui;
 mod headless_host;
 mod host;
 mod host_config;
 mod host_reload;
+mod host_tools;
 pub mod physics;
+pub mod play_mode;
 pub mod plugins;
 pub mod render;
 pub mod scene;
+pub mod scripts;
 pub mod state_dump;
 pub mod window;
 pub mod world;
@@ -43,5 +54,6 @@ pub mod world;
 pub use headless_host::HeadlessHost;
 pub use host::{FrameReport, Host};
 pub use host_config::HostConfig;
+pub use onyx_physics::PhysicsPreset;
 pub use plugins::{PluginLoadError, PluginStatus, ReloadError};
-pub use scene::SceneError;
+pub use scene::{SceneError, ScenePhysics};

@@ -1,4 +1,5 @@
 //! Benchmarks: ms/step for 1,000 / 10,000 bodies settled on a ground (asleep and awake),
+//! the idle cost (empty world, 10,000 sleeping bodies vs awake),
 //! the 20-row pyramid, and GJK query time. Run: `cargo bench -p onyx-physics`.
 
 use std::hint::black_box;
@@ -127,5 +128,49 @@ fn glam_euler() -> onyx_physics::glam::EulerRot {
     onyx_physics::glam::EulerRot::XYZ
 }
 
-criterion_group!(benches, bench_steps, bench_gjk);
+criterion_group!(benches, bench_steps, bench_idle, bench_gjk);
 criterion_main!(benches);
+
+/// `n` boxes and spheres on a ground, stepped until every body sleeps (at most 600 steps).
+fn sleeping_world(n: usize) -> PhysicsWorld {
+    let mut w = settled_world(n, true);
+    for _ in 0..600 {
+        if w.step().counters.awake_bodies == 0 {
+            break;
+        }
+    }
+    w
+}
+
+/// What a step costs when there is nothing to do: an empty world, and 10,000 bodies that all
+/// sleep (no broadphase, narrowphase or solver work for them), next to the same 10,000 bodies
+/// awake. The FIGURE lines give µs/step.
+fn bench_idle(c: &mut Criterion) {
+    let mut group = c.benchmark_group("idle");
+    group
+        .sample_size(10)
+        .warm_up_time(Duration::from_millis(300))
+        .measurement_time(Duration::from_secs(1));
+    let mut empty = PhysicsWorld::default();
+    let mut sleeping = sleeping_world(10_000);
+    let mut awake = settled_world(10_000, false);
+    for (name, w, steps) in [
+        ("empty_world", &mut empty, 10_000),
+        ("sleeping_10000", &mut sleeping, 200),
+        ("awake_10000", &mut awake, 10),
+    ] {
+        let t = Instant::now();
+        for _ in 0..steps {
+            w.step();
+        }
+        let us = t.elapsed().as_secs_f64() * 1e6 / steps as f64;
+        println!(
+            "FIGURE idle {name}: {us:.2} us/step (awake bodies {})",
+            w.last_step().counters.awake_bodies
+        );
+        group.bench_function(name, |b| {
+            b.iter(|| black_box(w.step().counters.awake_bodies))
+        });
+    }
+    group.finish();
+}

@@ -97,6 +97,11 @@ impl<T> Arena<T> {
     }
 
     /// Number of live values.
+    /// Number of slots (live or free): one past the largest index handed out.
+    pub(crate) fn capacity(&self) -> usize {
+        self.slots.len()
+    }
+
     pub(crate) fn len(&self) -> usize {
         self.len
     }

@@ -60,6 +60,7 @@ pub mod locked_axes; // `LockedAxes`: per-axis locks.
 pub mod mass_properties; // `MassProperties`: mass, centre of mass, inertia tensor.
 pub mod material; // `Material`: restitution and friction.
 pub mod narrowphase; // Contact generation, GJK/EPA, persistent manifolds and pairs.
+pub mod physics_preset; // `PhysicsPreset`: named accuracy profiles (fast / balanced / precise).
 pub mod physics_settings; // `PhysicsSettings`: every tunable with unit and cost.
 pub mod physics_world; // `PhysicsWorld`: owner of everything; `step()`.
 pub(crate) mod pipeline; // Private step stages (broadphase → narrowphase → solve → write-back/CCD → sleep → events).
@@ -86,6 +87,7 @@ pub use debug_line::DebugLine;
 pub use locked_axes::LockedAxes;
 pub use mass_properties::MassProperties;
 pub use material::Material;
+pub use physics_preset::PhysicsPreset;
 pub use physics_settings::PhysicsSettings;
 pub use physics_world::PhysicsWorld;
 pub use pose::Pose;

@@ -41,11 +41,12 @@ pub struct PhysicsSettings {
     /// Default: `3`
     /// Too high: deep overlaps explode apart. Too low: deep overlaps resolve slowly.
     pub max_contact_push_speed: f32,
-    /// Allowed resting penetration (no push-out below it), metres. Also the CCD stop
-    /// distance and the hysteresis for ending contact events.
+    /// Contact distance tolerance, metres: the CCD stop distance and the hysteresis for
+    /// ending contact events. (The solver has no penetration dead zone: resting bodies sink
+    /// only by the soft contact's static deflection, ~0.07 mm on the ground at defaults.)
     /// Default: `0.001`
-    /// Too high: visible sinking (stacks lose one slop per level). Too low: push-out works
-    /// against resting contacts and contact events flicker.
+    /// Too high: CCD stops bodies visibly short of walls. Too low: contact events flicker
+    /// and CCD hits land in contact.
     pub linear_slop: f32,
     /// Contacts closer than this are generated ahead of touching (speculative), metres.
     /// Default: `0.02`
@@ -57,7 +58,8 @@ pub struct PhysicsSettings {
     /// Too high: costly pairs for fast bodies, ghost contacts. Too low: falling bodies
     /// overlap the ground at impact.
     pub max_speculative_distance: f32,
-    /// Enlargement of broadphase boxes, metres.
+    /// Enlargement of broadphase boxes, metres (at most a quarter of the collider's smallest
+    /// half extent, so small bodies do not collect far neighbours).
     /// Default: `0.1`
     /// Too high: many pairs that never touch. Too low: tree updates every step.
     pub aabb_margin: f32,

@@ -19,6 +19,7 @@ use crate::narrowphase::NarrowPhase;
 use crate::physics_settings::PhysicsSettings;
 use crate::rigid_body::RigidBody;
 use crate::rigid_body_desc::RigidBodyDesc;
+use crate::solver::body_state::BodyState;
 use crate::solver::contact_constraint::ContactConstraint;
 use crate::solver::solver_body::SolverBody;
 use crate::step_output::StepOutput;
@@ -37,11 +38,22 @@ pub struct PhysicsWorld {
     pub(crate) output: StepOutput,
     pub(crate) pending_events: Vec<ContactEvent>,
     pub(crate) solver_bodies: Vec<SolverBody>,
+    /// Hot solver state, parallel to `solver_bodies`.
+    pub(crate) solver_states: Vec<BodyState>,
     /// Body slot index of each solver body (entry 0 unused).
     pub(crate) solver_handles: Vec<u32>,
     pub(crate) constraints: Vec<ContactConstraint>,
     pub(crate) constraint_points: Vec<crate::solver::contact_constraint::ConstraintPoint>,
     pub(crate) new_pairs: Vec<(u32, u32)>,
+    /// Arena indices of the bodies that take part in this step (awake, not static, not
+    /// quarantined), gathered by the pre-step and by wake-ups; sleeping bodies are not in it.
+    pub(crate) active_bodies: Vec<u32>,
+    /// `active_bodies` as flags by arena index (pair filtering without body lookups).
+    pub(crate) active_flags: Vec<bool>,
+    /// Pairs regenerated this step that touch (for the contact report).
+    pub(crate) report_pairs: Vec<u32>,
+    /// Scratch: deepest contact (separation, normal) per solver body.
+    pub(crate) deepest_contact: Vec<(f32, Vec3, bool)>,
     pub(crate) wake: Vec<BodyHandle>,
     pub(crate) islands: HashMap<u32, Vec<BodyHandle>>,
     pub(crate) next_island: u32,
@@ -67,10 +79,15 @@ impl PhysicsWorld {
             output: StepOutput::default(),
             pending_events: Vec::new(),
             solver_bodies: Vec::new(),
+            solver_states: Vec::new(),
             solver_handles: Vec::new(),
             constraints: Vec::new(),
             constraint_points: Vec::new(),
             new_pairs: Vec::new(),
+            deepest_contact: Vec::new(),
+            active_bodies: Vec::new(),
+            active_flags: Vec::new(),
+            report_pairs: Vec::new(),
             wake: Vec::new(),
             islands: HashMap::new(),
             next_island: 0,
@@ -253,6 +270,12 @@ impl PhysicsWorld {
         self.output.quarantined.clear();
         self.output.counters = Default::default();
         if !(self.settings.dt > 0.0 && self.settings.dt.is_finite()) {
+            return &self.output;
+        }
+        if self.bodies.is_empty() && self.narrowphase.pairs.is_empty() {
+            // Nothing to simulate: no stage has work.
+            self.time += f64::from(self.settings.dt);
+            self.output.counters.total = t_start.elapsed();
             return &self.output;
         }
         self.prestep();

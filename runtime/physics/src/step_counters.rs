@@ -27,6 +27,8 @@ pub struct StepCounters {
     pub new_pairs: u32,
     /// Contact manifolds solved.
     pub manifolds: u32,
+    /// Pairs whose manifolds were refreshed (bodies barely moved) instead of regenerated.
+    pub reused_pairs: u32,
     /// Contact points solved.
     pub contacts: u32,
     /// GJK runs.

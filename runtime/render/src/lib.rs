@@ -75,6 +75,8 @@ mod material;
 pub mod mesh;
 /// Offscreen render target with image readback.
 mod offscreen;
+/// What a caller draws over a finished frame.
+mod overlay;
 /// Shader sources, compilation and pipelines.
 pub mod pipeline;
 /// Texture → image readback.
@@ -117,6 +119,7 @@ pub use light::{DirectionalLight, Lights, PointLight, MAX_POINT_LIGHTS};
 pub use material::Material;
 pub use mesh::{InvalidMeshError, MeshData, MeshHandle, Model, ModelLoadError, ModelPart, Vertex};
 pub use offscreen::{OffscreenTarget, OFFSCREEN_FORMAT};
+pub use overlay::Overlay;
 pub use pipeline::{ShaderError, ShaderReloadError, ShaderSource};
 pub use readback_error::ReadbackError;
 pub use render_error::RenderError;

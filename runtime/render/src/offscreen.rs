@@ -41,7 +41,9 @@ impl OffscreenTarget {
             usage: wgpu::TextureUsages::RENDER_ATTACHMENT
                 | wgpu::TextureUsages::COPY_SRC
                 | wgpu::TextureUsages::TEXTURE_BINDING,
-            view_formats: &[],
+            // The same bytes as plain `Rgba8Unorm`: what egui samples (it expects textures
+            // holding sRGB values, not sRGB-aware ones).
+            view_formats: &[wgpu::TextureFormat::Rgba8Unorm],
         });
         let view = texture.create_view(&wgpu::TextureViewDescriptor::default());
         Self {
@@ -62,6 +64,16 @@ impl OffscreenTarget {
     #[must_use]
     pub fn view(&self) -> &wgpu::TextureView {
         &self.view
+    }
+
+    /// A view of the colour as plain `Rgba8Unorm` (the stored sRGB bytes, undecoded): for
+    /// samplers that expect sRGB-encoded values, such as egui's.
+    #[must_use]
+    pub fn encoded_view(&self) -> wgpu::TextureView {
+        self.texture.create_view(&wgpu::TextureViewDescriptor {
+            format: Some(wgpu::TextureFormat::Rgba8Unorm),
+            ..wgpu::TextureViewDescriptor::default()
+        })
     }
 
     /// Copies the colour texture to the CPU and waits for it.

@@ -7,6 +7,8 @@ use std::time::Duration;
 pub struct RenderStats {
     /// Draw calls issued (meshes, grid and debug lines).
     pub draw_calls: u32,
+    /// Triangles submitted for meshes (index count / 3 × instances, all batches).
+    pub triangles: u64,
     /// Mesh instances drawn (objects that survived culling).
     pub instances: u32,
     /// Objects removed by frustum culling.

@@ -204,6 +204,18 @@ impl Renderer {
         target: &mut impl RenderTarget,
         scene: &RenderScene<'_>,
     ) -> Result<RenderStats, RenderError> {
+        self.render_with_overlay(target, scene, |_| {})
+    }
+
+    /// Like [`Renderer::render`], then lets `overlay` record passes over the finished scene
+    /// (a user interface) before the frame is submitted and presented. `overlay` is not called
+    /// when the frame is skipped (minimised window, surface not ready).
+    pub fn render_with_overlay(
+        &mut self,
+        target: &mut impl RenderTarget,
+        scene: &RenderScene<'_>,
+        overlay: impl FnOnce(&mut crate::Overlay<'_>),
+    ) -> Result<RenderStats, RenderError> {
         let size = target.size();
         if size.0 == 0 || size.1 == 0 {
             self.stats = RenderStats {
@@ -228,6 +240,14 @@ impl Renderer {
                     label: Some("onyx frame"),
                 });
         stats.draw_calls = self.encode(&mut encoder, &frame, scene.grid);
+        overlay(&mut crate::Overlay {
+            device: self.gpu.device(),
+            queue: self.gpu.queue(),
+            encoder: &mut encoder,
+            view: &frame.color,
+            format: frame.format,
+            size,
+        });
         self.gpu.queue().submit([encoder.finish()]);
         target.end_frame(&self.gpu, frame);
         self.stats = stats;
@@ -283,8 +303,18 @@ impl Renderer {
             bytemuck::cast_slice(&self.lines),
         );
 
+        let triangles = self
+            .batcher
+            .batches()
+            .iter()
+            .filter_map(|batch| {
+                let mesh = self.meshes.get(batch.key.mesh)?;
+                Some(u64::from(mesh.index_count / 3) * u64::from(batch.instance_count))
+            })
+            .sum();
         RenderStats {
             draw_calls: 0,
+            triangles,
             instances: counts.visible,
             culled: counts.culled,
             batches: self.batcher.batches().len() as u32,

@@ -337,3 +337,34 @@ fn a_windowed_run_draws_the_scene_and_screenshots_it() {
         "the windowed screenshot differs from the reference by {mean:.2}/255 on average"
     );
 }
+
+#[test]
+fn physics_preset_comes_from_the_scene_and_the_command_line_wins() {
+    let dir = tempfile::tempdir().unwrap();
+    let dump_path = dir.path().join("state.json");
+    let dump = dump_path.to_str().unwrap();
+    let scene =
+        Path::new(env!("CARGO_MANIFEST_DIR")).join("../assets/scenes/physics/bounce_ladder.ron");
+    let scene = scene.to_str().unwrap();
+    let fixed_delta = |args: &[&str]| {
+        let mut all = vec!["run", "--headless", "--frames", "3", "--scene", scene];
+        all.extend_from_slice(args);
+        all.extend_from_slice(&["--dump-state", dump]);
+        let out = onyx(&all);
+        assert!(out.status.success(), "{}", stderr(&out));
+        let state = read_json(&dump_path);
+        state["time"]["fixed_delta"].as_f64().unwrap()
+    };
+    // The scene asks for balanced (60 Hz); the command line's preset and rate win.
+    assert!((fixed_delta(&[]) - 1.0 / 60.0).abs() < 1e-6);
+    assert!((fixed_delta(&["--physics", "precise"]) - 1.0 / 120.0).abs() < 1e-6);
+    assert!((fixed_delta(&["--physics", "fast", "--fixed-hz", "50"]) - 1.0 / 50.0).abs() < 1e-6);
+
+    let out = onyx(&["run", "--headless", "--frames", "1", "--physics", "turbo"]);
+    assert_eq!(out.status.code(), Some(2), "{}", stderr(&out));
+    assert!(
+        stderr(&out).contains("unknown physics preset \"turbo\""),
+        "{}",
+        stderr(&out)
+    );
+}

@@ -155,3 +155,77 @@ fn saving_replaces_the_file_atomically() {
     let leftovers: Vec<_> = std::fs::read_dir(dir.path()).unwrap().collect();
     assert_eq!(leftovers.len(), 1, "temporary files left behind");
 }
+
+#[test]
+fn a_scene_chooses_its_physics_preset_and_saves_it_back() {
+    use onyx_runtime::{PhysicsPreset, ScenePhysics};
+    let dir = tempfile::tempdir().unwrap();
+    let path = write(
+        dir.path(),
+        "precise.ron",
+        "(version: 1, physics: Some((preset: Precise, gravity: Some((0.0, -1.62, 0.0)))), \
+         entities: [(name: Some(\"ball\"), transform: Some((translation: (0.0, 5.0, 0.0))), \
+         rigid_body: Some((kind: Dynamic)), collider: Some((shape: Sphere(radius: 0.5))))])",
+    );
+    let mut host = HeadlessHost::new();
+    host.load_scene(&path).unwrap();
+    assert!((host.host_mut().clock_mut().fixed_delta() - 1.0 / 120.0).abs() < 1e-12);
+    let settings = *host.host().physics().world().settings();
+    assert_eq!(settings.substeps, 4);
+    assert_eq!(settings.gravity.y, -1.62);
+
+    // One simulated second at 120 Hz under lunar gravity: y = 5 - g t² / 2, up to the
+    // semi-implicit Euler error of one step.
+    host.set_frame_time(1.0 / 120.0);
+    host.step(120);
+    let (_, t) = host.find::<Transform>("ball").unwrap();
+    let expected = 5.0 - 0.5 * 1.62;
+    assert!(
+        (t.translation.y - expected).abs() < 0.01,
+        "y = {}, expected {expected}",
+        t.translation.y
+    );
+
+    let saved = dir.path().join("saved.ron");
+    host.host().save_scene(&saved).unwrap();
+    let file = read_scene(&saved).unwrap();
+    assert_eq!(
+        file.physics,
+        Some(ScenePhysics {
+            preset: PhysicsPreset::Precise,
+            gravity: Some([0.0, -1.62, 0.0]),
+            ..ScenePhysics::default()
+        })
+    );
+}
+
+#[test]
+fn a_scene_with_bad_physics_settings_is_refused_and_changes_nothing() {
+    let dir = tempfile::tempdir().unwrap();
+    let path = write(
+        dir.path(),
+        "bad.ron",
+        "(version: 1, physics: Some((preset: Fast, substeps: Some(0))), \
+         entities: [(name: Some(\"a\"))])",
+    );
+    let mut host = HeadlessHost::new();
+    let error = host.load_scene(&path).unwrap_err();
+    assert!(
+        matches!(error, SceneError::InvalidPhysics { .. }),
+        "{error}"
+    );
+    assert!(error.to_string().contains("physics.substeps"), "{error}");
+    assert_eq!(entity_count(&host), 0);
+    assert!((host.host_mut().clock_mut().fixed_delta() - 1.0 / 60.0).abs() < 1e-12);
+
+    let unknown = write(
+        dir.path(),
+        "unknown.ron",
+        "(version: 1, physics: Some((preset: Turbo)), entities: [])",
+    );
+    let error = host.load_scene(&unknown).unwrap_err();
+    assert!(
+        matches!(error, SceneError::Parse { line: 1, .. }),
+        "{error}"
+    );
+}

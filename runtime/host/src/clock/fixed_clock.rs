@@ -153,6 +153,18 @@ impl FixedClock {
         }
     }
 
+    /// Sets the fixed step rate (a scene's physics preset does); `false` if `hz` is not
+    /// finite and positive. Time already accumulated carries over to the new step length.
+    pub fn set_fixed_hz(&mut self, hz: f64) -> bool {
+        if hz.is_finite() && hz > 0.0 {
+            self.settings.fixed_hz = hz;
+            self.fixed_delta = 1.0 / hz;
+            true
+        } else {
+            false
+        }
+    }
+
     /// The settings in force.
     pub fn settings(&self) -> &ClockSettings {
         &self.settings

@@ -4,8 +4,8 @@ use std::collections::HashMap;
 
 use onyx_physics::glam::Vec3;
 use onyx_physics::{
-    BodyHandle, ColliderDesc, ContactEventKind, MassProperties, PhysicsSettings, PhysicsWorld,
-    Pose, QueryFilter, RigidBodyDesc,
+    BodyHandle, BodyType, ColliderDesc, ContactEventKind, MassProperties, PhysicsSettings,
+    PhysicsWorld, Pose, QueryFilter, RigidBodyDesc,
 };
 use onyx_plugin_api::host::PhysicsCommand;
 use onyx_plugin_api::{
@@ -14,6 +14,9 @@ use onyx_plugin_api::{
 };
 
 use crate::render::AssetRegistry;
+use crate::scene::ScenePhysics;
+
+use super::entity_map::EntityMap;
 use crate::world::entity_id::{to_api, to_hecs};
 
 /// What the host keeps per simulated entity.
@@ -26,13 +29,18 @@ struct Link {
     /// the user moved the entity.
     written: Transform,
     written_velocity: (Vec3, Vec3),
+    /// The last write-back was of a sleeping or static body: until it wakes or moves there
+    /// is nothing new to write.
+    settled: bool,
+    /// The [`PhysicsSystem::sync`] that last found the entity with its components.
+    seen: u64,
 }
 
 /// The physics world behind the components. Empty scenes cost nothing: with no collider in
 /// the world, a step does no work.
 pub struct PhysicsSystem {
     world: PhysicsWorld,
-    links: HashMap<hecs::Entity, Link>,
+    links: EntityMap<Link>,
     entity_of: HashMap<BodyHandle, hecs::Entity>,
     /// Bodies removed since the last step, whose "contact ended" events arrive with it.
     departed: HashMap<BodyHandle, hecs::Entity>,
@@ -40,6 +48,10 @@ pub struct PhysicsSystem {
     /// component changes).
     failed: HashMap<hecs::Entity, Collider>,
     commands: Vec<(Entity, PhysicsCommand)>,
+    /// The preset and overrides chosen by a scene file or the host, if any.
+    scene_physics: Option<ScenePhysics>,
+    /// Counts syncs; a link not stamped with the current one has lost its entity.
+    sync_epoch: u64,
 }
 
 impl std::fmt::Debug for PhysicsSystem {
@@ -82,17 +94,35 @@ impl PhysicsSystem {
     pub fn new(settings: PhysicsSettings) -> Self {
         Self {
             world: PhysicsWorld::new(settings),
-            links: HashMap::new(),
+            links: EntityMap::default(),
             entity_of: HashMap::new(),
             departed: HashMap::new(),
             failed: HashMap::new(),
             commands: Vec::new(),
+            scene_physics: None,
+            sync_epoch: 0,
         }
     }
 
     /// The physics world (read-only: the components drive it).
     pub fn world(&self) -> &PhysicsWorld {
         &self.world
+    }
+
+    /// Uses a scene's preset and overrides (the step length still follows the host's fixed
+    /// step).
+    pub fn set_scene_physics(&mut self, physics: ScenePhysics) {
+        let dt = self.world.settings().dt;
+        *self.world.settings_mut() = PhysicsSettings {
+            dt,
+            ..physics.settings()
+        };
+        self.scene_physics = Some(physics);
+    }
+
+    /// The preset and overrides set with [`PhysicsSystem::set_scene_physics`].
+    pub fn scene_physics(&self) -> Option<&ScenePhysics> {
+        self.scene_physics.as_ref()
     }
 
     /// The settings, to tune accuracy and cost.
@@ -254,55 +284,39 @@ impl PhysicsSystem {
             .dynamic_friction(collider.friction))
     }
 
+    /// Components → bodies in one pass over the simulated entities: builds new bodies,
+    /// rebuilds changed ones, removes those whose entity or components are gone, and carries
+    /// moved transforms and set velocities over. Unchanged entities cost one comparison.
     fn sync(&mut self, world: &mut hecs::World, assets: &AssetRegistry, events: &mut Vec<Event>) {
-        // Bodies whose entity or components are gone.
-        let stale: Vec<hecs::Entity> = self
-            .links
-            .keys()
-            .filter(|e| {
-                world.get::<&Collider>(**e).is_err() || world.get::<&Transform>(**e).is_err()
-            })
-            .copied()
-            .collect();
-        for e in stale {
-            self.remove(e);
-        }
-        self.failed
-            .retain(|e, _| world.get::<&Collider>(*e).is_ok());
-        let rows: Vec<(hecs::Entity, Transform, Collider, Option<RigidBody>)> = world
+        self.sync_epoch += 1;
+        let epoch = self.sync_epoch;
+        let mut seen = 0;
+        let mut rebuild: Vec<(hecs::Entity, Transform, Collider, Option<RigidBody>)> = Vec::new();
+        for (e, t, collider, rb) in world
             .query::<(hecs::Entity, &Transform, &Collider, Option<&RigidBody>)>()
             .iter()
-            .map(|(e, t, c, rb)| (e, *t, *c, rb.copied()))
-            .collect();
-        for (e, t, collider, rb) in rows {
-            let rebuild = self
-                .links
-                .get(&e)
-                .is_none_or(|link| link.built_from != (rb.map(config_only), collider));
-            if rebuild {
-                self.remove(e);
-                if self.failed.get(&e) == Some(&collider) {
+        {
+            let link = match self.links.get_mut(e) {
+                Some(link) if link.built_from == (rb.copied().map(config_only), *collider) => link,
+                _ => {
+                    rebuild.push((e, *t, *collider, rb.copied()));
                     continue;
                 }
-                match Self::collider_desc(&collider, assets, to_api(e)) {
-                    Ok(desc) => {
-                        self.failed.remove(&e);
-                        self.build(e, &t, rb.as_ref(), collider, desc);
-                    }
-                    Err(event) => {
-                        events.push(event);
-                        self.failed.insert(e, collider);
-                    }
-                }
+            };
+            link.seen = epoch;
+            seen += 1;
+            let moved =
+                t.translation != link.written.translation || t.rotation != link.written.rotation;
+            let new_velocity = rb.is_some_and(|rb| {
+                (rb.linear_velocity, rb.angular_velocity) != link.written_velocity
+            });
+            if !moved && !new_velocity {
                 continue;
             }
-            let Some(link) = self.links.get_mut(&e) else {
-                continue;
-            };
             let Some(body) = self.world.body_mut(link.body) else {
                 continue;
             };
-            if t.translation != link.written.translation || t.rotation != link.written.rotation {
+            if moved {
                 let pose = Pose {
                     translation: t.translation,
                     rotation: t.rotation,
@@ -312,11 +326,45 @@ impl PhysicsSystem {
                 } else {
                     body.set_pose(pose);
                 }
+                link.written = *t;
+                link.settled = false;
             }
-            if let Some(rb) = rb {
-                if (rb.linear_velocity, rb.angular_velocity) != link.written_velocity {
-                    body.set_linvel(rb.linear_velocity);
-                    body.set_angvel(rb.angular_velocity);
+            if let (true, Some(rb)) = (new_velocity, rb) {
+                body.set_linvel(rb.linear_velocity);
+                body.set_angvel(rb.angular_velocity);
+                link.written_velocity = (rb.linear_velocity, rb.angular_velocity);
+                link.settled = false;
+            }
+        }
+        // Bodies whose entity or components are gone (or changed: rebuilt below).
+        if seen != self.links.len() {
+            let stale: Vec<hecs::Entity> = self
+                .links
+                .iter()
+                .filter(|(_, link)| link.seen != epoch)
+                .map(|(e, _)| e)
+                .collect();
+            for e in stale {
+                self.remove(e);
+            }
+        }
+        if !self.failed.is_empty() {
+            self.failed
+                .retain(|e, _| world.get::<&Collider>(*e).is_ok());
+        }
+        for (e, t, collider, rb) in rebuild {
+            self.remove(e);
+            if self.failed.get(&e) == Some(&collider) {
+                continue;
+            }
+            match Self::collider_desc(&collider, assets, to_api(e)) {
+                Ok(desc) => {
+                    self.failed.remove(&e);
+                    self.build(e, &t, rb.as_ref(), collider, desc);
+                }
+                Err(event) => {
+                    events.push(event);
+                    self.failed.insert(e, collider);
                 }
             }
         }
@@ -354,12 +402,14 @@ impl PhysicsSystem {
                 written_velocity: rb.map_or((Vec3::ZERO, Vec3::ZERO), |rb| {
                     (rb.linear_velocity, rb.angular_velocity)
                 }),
+                settled: false,
+                seen: self.sync_epoch,
             },
         );
     }
 
     fn remove(&mut self, e: hecs::Entity) {
-        if let Some(link) = self.links.remove(&e) {
+        if let Some(link) = self.links.remove(e) {
             self.world.remove_body(link.body);
             self.entity_of.remove(&link.body);
             self.departed.insert(link.body, e);
@@ -369,7 +419,7 @@ impl PhysicsSystem {
     fn apply_commands(&mut self, events: &mut Vec<Event>) {
         for (entity, command) in std::mem::take(&mut self.commands) {
             let body = to_hecs(entity)
-                .and_then(|e| self.links.get(&e))
+                .and_then(|e| self.links.get(e))
                 .and_then(|link| self.world.body_mut(link.body));
             let Some(body) = body else {
                 events.push(Event::Platform(PlatformEvent::Error {
@@ -392,11 +442,16 @@ impl PhysicsSystem {
     }
 
     fn write_back(&mut self, world: &mut hecs::World) {
-        for (e, link) in &mut self.links {
+        for (e, link) in self.links.iter_mut() {
             let Some(body) = self.world.body(link.body) else {
                 continue;
             };
-            let Ok((t, rb)) = world.query_one_mut::<(&mut Transform, Option<&mut RigidBody>)>(*e)
+            let at_rest = body.is_sleeping() || body.body_type() == BodyType::Static;
+            if link.settled && at_rest {
+                continue;
+            }
+            link.settled = at_rest;
+            let Ok((t, rb)) = world.query_one_mut::<(&mut Transform, Option<&mut RigidBody>)>(e)
             else {
                 continue;
             };

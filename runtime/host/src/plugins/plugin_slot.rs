@@ -66,10 +66,12 @@ impl PluginSlot {
         if self.status.is_faulted() {
             return None;
         }
+        let start = std::time::Instant::now();
         let result = {
             let mut cx = CallContext::new(state, &self.name);
             f(&mut self.instance, &mut cx)
         };
+        (state.tools.diagnostics.timer).record(&self.name, stage, start.elapsed());
         match result {
             Ok(value) => Some(value),
             Err(error) => {

@@ -27,6 +27,8 @@ pub enum Stage {
     SaveState,
     /// `load_state`.
     LoadState,
+    /// `on_script` (a registered script running on an entity).
+    Script,
 }
 
 impl Stage {
@@ -45,8 +47,22 @@ impl Stage {
             Stage::Detach => "on_detach",
             Stage::SaveState => "save_state",
             Stage::LoadState => "load_state",
+            Stage::Script => "on_script",
         }
     }
+
+    /// The methods the diagnostics time, in frame order.
+    pub const ALL_TIMED: [Stage; 9] = [
+        Stage::Event,
+        Stage::FixedUpdate,
+        Stage::Update,
+        Stage::Script,
+        Stage::Render,
+        Stage::DrawGui,
+        Stage::Resize,
+        Stage::Init,
+        Stage::Attach,
+    ];
 }
 
 impl std::fmt::Display for Stage {

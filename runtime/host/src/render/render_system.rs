@@ -2,10 +2,9 @@
 
 use std::collections::HashMap;
 
-use onyx_plugin_api::glam::{Mat4, Vec3};
+use onyx_plugin_api::glam::Vec3;
 use onyx_plugin_api::{
-    Camera, Entity, Event, GraphicsEvent, Light, MeshId, MeshRenderer, Projection, ShadingMode,
-    TextureId, Transform,
+    Event, GraphicsEvent, Light, MeshId, MeshRenderer, ShadingMode, TextureId, Transform,
 };
 use onyx_render::mesh::{Model, ModelPart};
 use onyx_render::{
@@ -16,7 +15,6 @@ use onyx_render::{
 
 use super::previous_transform::{interpolate, PreviousTransform};
 use super::ShaderWatcher;
-use crate::world::entity_id::to_hecs;
 use crate::world::HostState;
 
 /// A renderer plus what the host keeps to feed it: the GPU copies of the registered models
@@ -33,6 +31,8 @@ pub struct RenderSystem {
     pub grid: bool,
     /// Whether physics debug lines (collider outlines, contacts, normals) are drawn.
     pub physics_debug: bool,
+    /// The GPU side of plugin GUIs drawn with this renderer.
+    pub(crate) gui: crate::gui::GuiGpu,
 }
 
 impl std::fmt::Debug for RenderSystem {
@@ -66,6 +66,7 @@ impl RenderSystem {
             shader_watcher: None,
             grid: true,
             physics_debug: false,
+            gui: crate::gui::GuiGpu::default(),
         }
     }
 
@@ -194,6 +195,16 @@ impl RenderSystem {
         state: &mut HostState,
         target: &mut impl RenderTarget,
     ) -> Result<RenderStats, RenderError> {
+        self.draw_with_overlay(state, target, |_| {})
+    }
+
+    /// Like [`RenderSystem::draw`], then `overlay` draws over the finished scene (the GUI).
+    pub fn draw_with_overlay(
+        &mut self,
+        state: &mut HostState,
+        target: &mut impl RenderTarget,
+        overlay: impl FnOnce(&mut onyx_render::Overlay<'_>),
+    ) -> Result<RenderStats, RenderError> {
         self.poll_shaders(state);
         let alpha = state.clock.time().alpha;
         let camera = self.camera(state);
@@ -223,7 +234,14 @@ impl RenderSystem {
                 let mut material = onyx_render::Material {
                     color: [r * pc[0], g * pc[1], b * pc[2], a * pc[3]],
                     texture: texture.or(part.material.texture),
-                    shading: to_render_shading(renderer.material.shading),
+                    shading: to_render_shading(
+                        state
+                            .tools
+                            .render_overrides
+                            .shading
+                            .into_option()
+                            .unwrap_or(renderer.material.shading),
+                    ),
                 };
                 if material.shading != onyx_render::ShadingMode::Lit {
                     material.texture = None;
@@ -239,7 +257,12 @@ impl RenderSystem {
                 DebugLine::new(l.start, l.end, l.color).with_category(DebugCategories::USER)
             }),
         );
-        if self.physics_debug {
+        let overrides = state.tools.render_overrides;
+        if overrides
+            .physics_debug
+            .into_option()
+            .unwrap_or(self.physics_debug)
+        {
             self.lines
                 .extend(state.physics.debug_lines().into_iter().map(|l| {
                     DebugLine::new(l.start, l.end, l.color).with_category(DebugCategories::PHYSICS)
@@ -247,9 +270,9 @@ impl RenderSystem {
         }
         let scene = RenderScene::new(camera, &lights)
             .with_objects(&self.objects)
-            .with_grid(self.grid)
+            .with_grid(overrides.grid.into_option().unwrap_or(self.grid))
             .with_debug_lines(&self.lines);
-        let result = self.renderer.render(target, &scene);
+        let result = self.renderer.render_with_overlay(target, &scene, overlay);
         self.forward_events(state);
         result
     }
@@ -269,50 +292,7 @@ impl RenderSystem {
     }
 
     fn camera(&self, state: &HostState) -> onyx_render::Camera {
-        let world = &state.world;
-        let chosen = state
-            .camera_override
-            .and_then(|e: Entity| to_hecs(e))
-            .and_then(|e| {
-                let camera = world.get::<&Camera>(e).ok()?;
-                let t = world.get::<&Transform>(e).ok()?;
-                Some((*camera, *t))
-            })
-            .or_else(|| {
-                world
-                    .query::<(&Camera, &Transform)>()
-                    .iter()
-                    .find(|(c, _)| c.active)
-                    .map(|(c, t)| (*c, *t))
-            });
-        match chosen {
-            Some((camera, t)) => {
-                let projection = match camera.projection {
-                    Projection::Perspective { fov_y } => onyx_render::Projection::Perspective {
-                        fov_y,
-                        near: camera.near,
-                        far: camera.far,
-                    },
-                    Projection::Orthographic { height } => onyx_render::Projection::Orthographic {
-                        height,
-                        near: camera.near,
-                        far: camera.far,
-                    },
-                };
-                let pose = Mat4::from_rotation_translation(t.rotation, t.translation);
-                onyx_render::Camera::from_world_transform(pose, projection)
-            }
-            None => {
-                let orbit = &state.orbit;
-                onyx_render::Camera::perspective_look_at(
-                    orbit.eye(),
-                    orbit.target,
-                    50f32.to_radians(),
-                    0.1,
-                    1000.0,
-                )
-            }
-        }
+        super::active_camera(state)
     }
 
     fn lights(state: &HostState) -> Lights {

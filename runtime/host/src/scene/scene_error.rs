@@ -53,6 +53,14 @@ pub enum SceneError {
         /// What is wrong.
         message: String,
     },
+    /// The scene's physics settings are not acceptable.
+    #[error("scene `{}`: {message}", .path.display())]
+    InvalidPhysics {
+        /// The file.
+        path: PathBuf,
+        /// What is wrong.
+        message: String,
+    },
     /// The world could not be serialized.
     #[error("could not serialize the scene: {message}")]
     Serialize {

@@ -5,6 +5,8 @@ use std::collections::BTreeMap;
 use onyx_plugin_api::{Camera, Light, RigidBody, ShadingMode, Transform};
 use serde::{Deserialize, Serialize};
 
+use super::ScenePhysics;
+
 /// The scene format this host writes and reads.
 pub const SCENE_FORMAT_VERSION: u32 = 1;
 
@@ -13,6 +15,7 @@ pub const SCENE_FORMAT_VERSION: u32 = 1;
 /// ```ron
 /// (
 ///     version: 1,
+///     physics: Some((preset: Balanced)),
 ///     entities: [
 ///         (
 ///             name: Some("crate"),
@@ -27,6 +30,9 @@ pub const SCENE_FORMAT_VERSION: u32 = 1;
 pub struct SceneFile {
     /// Format version; see [`SCENE_FORMAT_VERSION`].
     pub version: u32,
+    /// How the scene is simulated (absent: the host's current settings).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub physics: Option<ScenePhysics>,
     /// The entities, in order.
     #[serde(default)]
     pub entities: Vec<SceneEntity>,

@@ -31,6 +31,14 @@ pub fn parse_scene(text: &str, path: &Path) -> Result<SceneFile, SceneError> {
             supported: SCENE_FORMAT_VERSION,
         });
     }
+    if let Some(physics) = &scene.physics {
+        physics
+            .validate()
+            .map_err(|message| SceneError::InvalidPhysics {
+                path: path.to_path_buf(),
+                message,
+            })?;
+    }
     Ok(scene)
 }
 
@@ -339,6 +347,7 @@ pub fn scene_from_world(world: &hecs::World, assets: &AssetRegistry) -> SceneFil
         .collect();
     SceneFile {
         version: SCENE_FORMAT_VERSION,
+        physics: None,
         entities,
     }
 }

@@ -99,6 +99,7 @@ struct App<'h> {
     options: WindowOptions,
     window: Option<Arc<Window>>,
     graphics: Option<WindowGraphics>,
+    gui: Option<super::WindowGui>,
     error: Option<WindowError>,
     last_frame: Option<Instant>,
     next_frame: Instant,
@@ -119,6 +120,7 @@ pub fn run_windowed(
         options,
         window: None,
         graphics: None,
+        gui: None,
         error: None,
         last_frame: None,
         next_frame: Instant::now(),
@@ -146,7 +148,13 @@ impl App<'_> {
             .map(|t| now.duration_since(t).as_secs_f64())
             .unwrap_or(1.0 / self.options.target_fps.max(1.0));
         self.last_frame = Some(now);
+        if let (Some(gui), Some(window)) = (&mut self.gui, &self.window) {
+            gui.before_frame(self.host, window);
+        }
         let report = self.host.frame(dt);
+        if let (Some(gui), Some(window)) = (&mut self.gui, &self.window) {
+            gui.after_frame(self.host, window);
+        }
         if let Some(graphics) = &mut self.graphics {
             if let Err(error) = self.host.render(&mut graphics.system, &mut graphics.target) {
                 tracing::error!("frame not drawn: {error}");
@@ -192,6 +200,7 @@ impl ApplicationHandler for App<'_> {
                     width: size.width,
                     height: size.height,
                 });
+                self.gui = Some(super::WindowGui::new(&window));
                 self.window = Some(window);
                 self.next_frame = Instant::now();
             }
@@ -203,6 +212,9 @@ impl ApplicationHandler for App<'_> {
     }
 
     fn window_event(&mut self, event_loop: &ActiveEventLoop, _id: WindowId, event: WindowEvent) {
+        if let (Some(gui), Some(window)) = (&mut self.gui, &self.window) {
+            gui.on_window_event(window, &event);
+        }
         match event {
             WindowEvent::CloseRequested => {
                 self.host.push_event(OnyxWindowEvent::CloseRequested);

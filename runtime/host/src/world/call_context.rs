@@ -39,6 +39,8 @@ pub struct HostState {
     pub orbit: OrbitCamera,
     /// Rigid-body physics.
     pub physics: PhysicsSystem,
+    /// What the tool services keep (diagnostics, play mode, scripts, view switches).
+    pub tools: super::ToolState,
     entity_buffer: Vec<Entity>,
     transform_buffer: Vec<EntityTransform>,
 }
@@ -58,6 +60,7 @@ impl HostState {
             camera_override: None,
             orbit: OrbitCamera::default(),
             physics: PhysicsSystem::default(),
+            tools: super::ToolState::default(),
             entity_buffer: Vec::new(),
             transform_buffer: Vec::new(),
         }
@@ -66,8 +69,8 @@ impl HostState {
 
 /// [`HostState`] lent to one plugin for one call.
 pub struct CallContext<'a> {
-    state: &'a mut HostState,
-    plugin: &'a str,
+    pub(super) state: &'a mut HostState,
+    pub(super) plugin: &'a str,
 }
 
 impl<'a> CallContext<'a> {
@@ -76,13 +79,13 @@ impl<'a> CallContext<'a> {
         Self { state, plugin }
     }
 
-    fn entity(&self, entity: Entity) -> Result<hecs::Entity, CtxError> {
+    pub(super) fn entity(&self, entity: Entity) -> Result<hecs::Entity, CtxError> {
         to_hecs(entity)
             .filter(|e| self.state.world.contains(*e))
             .ok_or(CtxError::NoSuchEntity { entity })
     }
 
-    fn validate(&self, entity: Entity, value: &BuiltinValue) -> Result<(), CtxError> {
+    pub(super) fn validate(&self, entity: Entity, value: &BuiltinValue) -> Result<(), CtxError> {
         let non_finite = |component: &str| CtxError::NonFinite {
             entity,
             component: component.into(),

@@ -31,8 +31,11 @@ pub struct ContactPair {
     pub dynamic_friction: f32,
     /// Smallest separation of the last update, metres.
     pub(crate) min_separation: f32,
-    /// Manifolds were regenerated this step.
+    /// Manifolds were regenerated (or refreshed) this step.
     pub(crate) updated: bool,
+    /// Pose of B's body in A's body frame when the manifolds were last generated
+    /// (translation, rotation); `None` until the first generation.
+    pub(crate) generated_at: Option<(glam::Vec3, glam::Quat)>,
 }
 
 impl ContactPair {

@@ -30,6 +30,17 @@ pub const WARM_START_MATCH_DISTANCE: f32 = 0.02;
 /// Same-id points inherit impulses only if they moved less than this, metres.
 pub const WARM_START_ID_MAX_DISTANCE: f32 = 0.25;
 
+/// A pair's manifolds are reused (points refreshed from their body-local positions instead of
+/// regenerated) while B moved less than this relative to A since generation, as a fraction of
+/// the smaller collider's size (its smallest bounding-box half extent).
+pub const MANIFOLD_REUSE_SIZE_FRACTION: f32 = 0.02;
+
+/// … and never beyond this distance, metres.
+pub const MANIFOLD_REUSE_MAX_DISTANCE: f32 = 0.001;
+
+/// … and while B turned less than this relative to A, radians.
+pub const MANIFOLD_REUSE_MAX_ANGLE: f32 = 0.005;
+
 /// All contact pairs of the world.
 #[derive(Debug, Default)]
 pub struct NarrowPhase {
@@ -95,6 +106,7 @@ impl NarrowPhase {
             dynamic_friction: fd,
             min_separation: f32::MAX,
             updated: false,
+            generated_at: None,
         });
         true
     }
@@ -130,6 +142,26 @@ impl NarrowPhase {
         }
     }
 
+    /// Clears the manifolds of every pair of body `h` (quarantined), reporting `Ended` for
+    /// touching ones.
+    pub(crate) fn end_contacts_of(
+        &mut self,
+        h: BodyHandle,
+        bodies: &BodySet,
+        events: &mut Vec<ContactEvent>,
+    ) {
+        for p in &mut self.pairs {
+            if p.body_a != h && p.body_b != h {
+                continue;
+            }
+            if p.touching {
+                p.touching = false;
+                events.push(make_event(ContactEventKind::Ended, p, bodies, 0.0));
+            }
+            p.manifolds.clear();
+        }
+    }
+
     /// Regenerates manifolds of active pairs, drops pairs whose fat boxes separated, and
     /// records touch transitions. Bodies that a moving body touched while asleep are pushed
     /// to `wake`.
@@ -143,13 +175,21 @@ impl NarrowPhase {
         stats: &mut NarrowStats,
         events: &mut Vec<ContactEvent>,
         wake: &mut Vec<BodyHandle>,
+        active: &[bool],
     ) {
+        let reuse_cos_half = (0.5 * MANIFOLD_REUSE_MAX_ANGLE).cos();
         let mut i = 0;
         while i < self.pairs.len() {
             let (hca, hcb, hba, hbb) = {
                 let p = &self.pairs[i];
                 (p.collider_a, p.collider_b, p.body_a, p.body_b)
             };
+            // Pairs of two sleeping, static or quarantined bodies cost one flag lookup each.
+            let flag = |h: BodyHandle| active.get(h.index() as usize).copied().unwrap_or(false);
+            if !flag(hba) && !flag(hbb) {
+                i += 1;
+                continue;
+            }
             let (Some(ca), Some(cb), Some(ba), Some(bb)) = (
                 colliders.get(hca),
                 colliders.get(hcb),
@@ -204,6 +244,34 @@ impl NarrowPhase {
                 d_ab + rot_b * cb.local_pose.translation,
                 rot_b * cb.local_pose.rotation,
             );
+            let inv_a = rot_a.inverse();
+            let rel = (inv_a * d_ab, inv_a * rot_b);
+            let pair = &mut self.pairs[i];
+            if let Some((t0, q0)) = pair.generated_at {
+                let size = ca
+                    .aabb
+                    .half_extents()
+                    .min_element()
+                    .min(cb.aabb.half_extents().min_element());
+                let tol = (MANIFOLD_REUSE_SIZE_FRACTION * size).min(MANIFOLD_REUSE_MAX_DISTANCE);
+                let reach = ca
+                    .aabb
+                    .half_extents()
+                    .length()
+                    .max(cb.aabb.half_extents().length());
+                let motion = ((bb.linvel - ba.linvel).length()
+                    + (bb.angvel - ba.angvel).length() * reach)
+                    * settings.dt;
+                // |cos(θ/2)| of the relative turn since generation, against the bound.
+                let cos_half = q0.dot(rel.1).abs();
+                if rel.0.distance(t0) + motion < tol && cos_half > reuse_cos_half {
+                    refresh_manifolds(pair, ba, bb, d_ab, margin);
+                    stats.reused_pairs += 1;
+                    i += 1;
+                    continue;
+                }
+            }
+            pair.generated_at = Some(rel);
             self.raw.clear();
             collide(
                 &ca.shape,
@@ -217,7 +285,6 @@ impl NarrowPhase {
             );
             let com_a = rot_a * ba.mass.local_com;
             let com_b = d_ab + rot_b * bb.mass.local_com;
-            let inv_a = rot_a.inverse();
             let inv_b = rot_b.inverse();
             let pair = &mut self.pairs[i];
             self.old.clear();
@@ -239,8 +306,10 @@ impl NarrowPhase {
                         local_a,
                         local_b,
                         separation: rp.separation,
+                        generated_separation: rp.separation,
                         normal_impulse: 0.0,
                         tangent_impulse: Vec3::ZERO,
+                        twist_impulse: 0.0,
                         max_normal_impulse: 0.0,
                         id: rp.id,
                         anchor_a: rp.point - com_a,
@@ -264,6 +333,7 @@ impl NarrowPhase {
                     if let Some((_, k)) = best {
                         cp.normal_impulse = self.old[k].normal_impulse;
                         cp.tangent_impulse = self.old[k].tangent_impulse;
+                        cp.twist_impulse = self.old[k].twist_impulse;
                     }
                     m.points.push(cp);
                 }
@@ -282,6 +352,41 @@ impl NarrowPhase {
             i += 1;
         }
     }
+}
+
+/// Moves a pair's manifolds with its bodies: normals, separations and solver anchors from
+/// the points' body-local positions (the bodies barely moved since generation, so the
+/// touching features are the same); impulses stay for warm starting.
+fn refresh_manifolds(
+    pair: &mut ContactPair,
+    ba: &RigidBody,
+    bb: &RigidBody,
+    d_ab: Vec3,
+    margin: f32,
+) {
+    let (rot_a, rot_b) = (ba.pose.rotation, bb.pose.rotation);
+    let com_a = rot_a * ba.mass.local_com;
+    let com_b = d_ab + rot_b * bb.mass.local_com;
+    let mut min_sep = f32::MAX;
+    for m in &mut pair.manifolds {
+        let n = rot_a * m.local_normal;
+        m.normal = n;
+        m.tangent1 = n.any_orthonormal_vector();
+        for p in &mut m.points {
+            let pa = rot_a * p.local_a;
+            let pb = d_ab + rot_b * p.local_b;
+            p.separation = p.generated_separation + (pb - pa).dot(n);
+            let mid = (pa + pb) * 0.5;
+            p.anchor_a = mid - com_a;
+            p.anchor_b = mid - com_b;
+            min_sep = min_sep.min(p.separation);
+        }
+        // Points that drifted beyond the speculative margin are dropped, as generation would.
+        m.points.retain(|p| p.separation <= margin);
+    }
+    pair.manifolds.retain(|m| !m.points.is_empty());
+    pair.min_separation = min_sep;
+    pair.updated = true;
 }
 
 /// Builds an event from a pair's current manifolds.

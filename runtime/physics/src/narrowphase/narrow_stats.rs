@@ -15,4 +15,6 @@ pub struct NarrowStats {
     pub epa_iterations: u32,
     /// EPA runs that hit a cap or met a flat Minkowski difference (fallback used).
     pub epa_failures: u32,
+    /// Pairs whose manifolds were refreshed from body-local points instead of regenerated.
+    pub reused_pairs: u32,
 }

@@ -14,7 +14,8 @@ impl PhysicsWorld {
     /// `Started` events carry this step's impulse.
     pub(crate) fn update_touching(&mut self) {
         let slop = self.settings.linear_slop;
-        for p in &mut self.narrowphase.pairs {
+        self.report_pairs.clear();
+        for (i, p) in self.narrowphase.pairs.iter_mut().enumerate() {
             if !p.updated {
                 continue;
             }
@@ -39,6 +40,9 @@ impl PhysicsWorld {
                     .events
                     .push(make_event(ContactEventKind::Ended, p, &self.bodies, 0.0));
             }
+            if p.touching {
+                self.report_pairs.push(i as u32);
+            }
         }
     }
 
@@ -50,11 +54,15 @@ impl PhysicsWorld {
                 b.last_contact_normal = None;
             }
         }
-        let mut deepest: Vec<(u32, f32, Vec3)> = Vec::new();
-        for p in &self.narrowphase.pairs {
-            if !p.touching {
-                continue;
-            }
+        // Deepest contact of each awake dynamic body, by solver index (no sort, no allocation
+        // once the scratch has grown).
+        let mut deepest = std::mem::take(&mut self.deepest_contact);
+        deepest.clear();
+        deepest.resize(self.solver_bodies.len(), (f32::MAX, Vec3::ZERO, false));
+        // Pairs that touch and were regenerated this step: a pair of sleeping bodies has no
+        // awake dynamic body to report on.
+        for &pi in &self.report_pairs {
+            let p = &self.narrowphase.pairs[pi as usize];
             for m in &p.manifolds {
                 let sep = m.min_separation();
                 for (h, n) in [(p.body_a, -m.normal), (p.body_b, m.normal)] {
@@ -64,19 +72,25 @@ impl PhysicsWorld {
                     if b.body_type != BodyType::Dynamic || b.solver_index == 0 {
                         continue;
                     }
-                    deepest.push((h.index(), sep, n));
+                    let slot = &mut deepest[b.solver_index as usize];
+                    // Grounded by any supporting contact (a box under a stack touches the
+                    // box above more deeply than the ground).
+                    slot.2 |= n.y >= min_y;
+                    if sep <= slot.0 {
+                        (slot.0, slot.1) = (sep, n);
+                    }
                 }
             }
         }
-        // Deepest last, so it wins.
-        deepest.sort_by(|a, b| b.1.total_cmp(&a.1));
-        for (idx, _sep, n) in deepest {
-            if let Some(b) = self.bodies.arena.get_by_index_mut(idx) {
-                if n.y >= min_y {
-                    b.grounded = true;
-                }
+        for (k, &(sep, n, grounded)) in deepest.iter().enumerate().skip(1) {
+            if sep == f32::MAX {
+                continue;
+            }
+            if let Some(b) = self.bodies.arena.get_by_index_mut(self.solver_handles[k]) {
+                b.grounded = grounded;
                 b.last_contact_normal = Some(n);
             }
         }
+        self.deepest_contact = deepest;
     }
 }

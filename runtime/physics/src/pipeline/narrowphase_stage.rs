@@ -15,6 +15,7 @@ impl PhysicsWorld {
             &mut stats,
             &mut self.output.events,
             &mut wake,
+            &self.active_flags,
         );
         // Wake touched sleepers now so they take part in this step's solve (their contacts
         // with static bodies are unchanged since they fell asleep).
@@ -28,5 +29,6 @@ impl PhysicsWorld {
         c.gjk_not_converged = stats.gjk_not_converged;
         c.epa_calls = stats.epa_calls;
         c.epa_failures = stats.epa_failures;
+        c.reused_pairs = stats.reused_pairs;
     }
 }

@@ -12,12 +12,18 @@ impl PhysicsWorld {
         let margin = self.settings.aabb_margin;
         let mut woken: Vec<BodyHandle> = std::mem::take(&mut self.wake);
         let mut bad: Vec<BodyHandle> = Vec::new();
+        self.active_bodies.clear();
+        self.active_flags.clear();
+        self.active_flags
+            .resize(self.bodies.arena.capacity(), false);
         for (h, b) in self.bodies.iter_mut() {
-            if b.wake_requested {
+            let requested = b.wake_requested;
+            if requested {
                 b.wake_requested = false;
                 woken.push(h);
             }
-            if b.quarantined || b.body_type == BodyType::Static {
+            // Sleeping bodies cannot have changed (a change wakes them): nothing to check.
+            if b.quarantined || (b.sleeping && !requested) || b.body_type == BodyType::Static {
                 continue;
             }
             if let Some(target) = b.kinematic_target {
@@ -42,6 +48,8 @@ impl PhysicsWorld {
                 bad.push(h);
             } else {
                 b.last_good_pose = b.pose;
+                self.active_bodies.push(h.index());
+                self.active_flags[h.index() as usize] = true;
             }
         }
         for h in bad {
@@ -88,6 +96,15 @@ impl PhysicsWorld {
         b.force = Vec3::ZERO;
         b.torque = Vec3::ZERO;
         b.kinematic_target = None;
+        if let Some(f) = self.active_flags.get_mut(h.index() as usize) {
+            *f = false;
+        }
+        self.active_bodies.retain(|&i| i != h.index());
+        // Its contacts end now (pairs with a sleeping partner are not revisited).
+        let mut events = std::mem::take(&mut self.output.events);
+        self.narrowphase
+            .end_contacts_of(h, &self.bodies, &mut events);
+        self.output.events = events;
         self.output.quarantined.push(h);
         self.output.counters.quarantined += 1;
     }
@@ -98,6 +115,14 @@ impl PhysicsWorld {
             return;
         };
         let island = b.island;
+        if b.sleeping {
+            mark_active(
+                &mut self.active_bodies,
+                &mut self.active_flags,
+                h.index(),
+                b,
+            );
+        }
         b.sleeping = false;
         b.sleep_timer = 0.0;
         b.island = u32::MAX;
@@ -107,11 +132,39 @@ impl PhysicsWorld {
         if let Some(members) = self.islands.remove(&island) {
             for m in members {
                 if let Some(mb) = self.bodies.get_mut(m) {
+                    if mb.sleeping {
+                        mark_active(
+                            &mut self.active_bodies,
+                            &mut self.active_flags,
+                            m.index(),
+                            mb,
+                        );
+                    }
                     mb.sleeping = false;
                     mb.sleep_timer = 0.0;
                     mb.island = u32::MAX;
                 }
             }
         }
+    }
+}
+
+/// Adds a body that just woke to the step's active set (unless static or quarantined).
+fn mark_active(
+    list: &mut Vec<u32>,
+    flags: &mut Vec<bool>,
+    index: u32,
+    b: &crate::rigid_body::RigidBody,
+) {
+    if b.quarantined || b.body_type == BodyType::Static {
+        return;
+    }
+    let i = index as usize;
+    if flags.len() <= i {
+        flags.resize(i + 1, false);
+    }
+    if !flags[i] {
+        flags[i] = true;
+        list.push(index);
     }
 }

@@ -6,7 +6,10 @@ use crate::body_type::BodyType;
 use crate::narrowphase::narrow_phase::is_active;
 use crate::physics_world::PhysicsWorld;
 use crate::rigid_body::mask_mat;
-use crate::solver::contact_constraint::{prepare, ConstraintPoint, ContactConstraint};
+use crate::solver::body_state::BodyState;
+use crate::solver::contact_constraint::{
+    prepare, ConstraintPoint, ContactConstraint, FrictionPart,
+};
 use crate::solver::solve::{solve_substeps, SolveParams};
 use crate::solver::solver_body::SolverBody;
 use crate::solver::Softness;
@@ -16,12 +19,24 @@ impl PhysicsWorld {
         let s = self.settings;
         let substeps = s.substeps.max(1);
         let h = s.dt / substeps as f32;
+        // Only the step's active bodies are visited: last step's solver bodies are reset,
+        // sleeping ones are never touched. Arena order keeps results independent of wake order.
+        for &idx in &self.solver_handles[1.min(self.solver_handles.len())..] {
+            if let Some(b) = self.bodies.arena.get_by_index_mut(idx) {
+                b.solver_index = 0;
+            }
+        }
+        self.active_bodies.sort_unstable();
         self.solver_bodies.clear();
+        self.solver_states.clear();
         self.solver_handles.clear();
         self.solver_bodies.push(SolverBody::STATIC);
+        self.solver_states.push(BodyState::STATIC);
         self.solver_handles.push(u32::MAX);
-        for (i, _g, b) in self.bodies.arena.iter_mut() {
-            b.solver_index = 0;
+        for &i in &self.active_bodies {
+            let Some(b) = self.bodies.arena.get_by_index_mut(i) else {
+                continue;
+            };
             if !is_active(b) {
                 continue;
             }
@@ -45,17 +60,19 @@ impl PhysicsWorld {
             } else {
                 (Vec3::ZERO, Vec3::ZERO)
             };
-            self.solver_bodies.push(SolverBody {
+            self.solver_states.push(BodyState {
                 v: b.linvel * if dynamic { lin_mask } else { Vec3::ONE },
                 w: b.angvel * if dynamic { ang_mask } else { Vec3::ONE },
                 dp: Vec3::ZERO,
-                dq: glam::Quat::IDENTITY,
                 dtheta: Vec3::ZERO,
                 inv_mass: if dynamic {
                     lin_mask * b.inv_mass
                 } else {
                     Vec3::ZERO
                 },
+            });
+            self.solver_bodies.push(SolverBody {
+                dq: glam::Quat::IDENTITY,
                 inv_i: mask_mat(inv_i, ang_mask),
                 lin_acc,
                 ang_acc,
@@ -73,12 +90,21 @@ impl PhysicsWorld {
 
         // Constraints.
         let hertz = s.contact_hertz.min(0.25 / h);
-        let soft = Softness::new(hertz, s.contact_damping_ratio, h);
-        let static_soft = Softness::new(2.0 * hertz, s.contact_damping_ratio, h);
+        let max_hertz = Softness::max_load_hertz(h, s.dt);
+        let g_h = s.gravity.length() * h;
         self.constraints.clear();
         self.constraint_points.clear();
         let mut contacts = 0u32;
         for (pi, pair) in self.narrowphase.pairs.iter().enumerate() {
+            let flag = |h: crate::body_handle::BodyHandle| {
+                self.active_flags
+                    .get(h.index() as usize)
+                    .copied()
+                    .unwrap_or(false)
+            };
+            if pair.manifolds.is_empty() || !flag(pair.body_a) && !flag(pair.body_b) {
+                continue;
+            }
             let (Some(ba), Some(bb)) = (self.bodies.get(pair.body_a), self.bodies.get(pair.body_b))
             else {
                 continue;
@@ -105,34 +131,50 @@ impl PhysicsWorld {
                     normal: n,
                     tangent: [t1, t2],
                     restitution: pair.restitution,
-                    softness: if a_dyn && b_dyn { soft } else { static_soft },
+                    softness: Softness::RIGID,
                     first: self.constraint_points.len() as u32,
                     count: 0,
                     pair: pi as u32,
                     manifold: mi as u32,
+                    friction: FrictionPart::default(),
                 };
                 let mut anchors = [(Vec3::ZERO, Vec3::ZERO); 4];
+                let (mut tangent, mut twist) = (Vec3::ZERO, 0.0f32);
                 for (k, p) in m.points.iter().take(4).enumerate() {
                     anchors[k] = (p.anchor_a, p.anchor_b);
+                    tangent += p.tangent_impulse;
+                    twist += p.twist_impulse;
                     self.constraint_points.push(ConstraintPoint {
                         base_separation: p.separation,
                         normal_impulse: p.normal_impulse,
-                        tangent_impulse: [p.tangent_impulse.dot(t1), p.tangent_impulse.dot(t2)],
                         ..ConstraintPoint::default()
                     });
                     c.count += 1;
                 }
+                c.friction.tangent_impulse = [tangent.dot(t1), tangent.dot(t2)];
+                c.friction.twist_impulse = twist;
                 contacts += u32::from(c.count);
                 let first = c.first as usize;
+                let count = c.count as usize;
                 prepare(
-                    &c,
+                    &mut c,
                     &mut self.constraint_points[first..],
-                    &anchors[..c.count as usize],
+                    &anchors[..count],
                     &self.solver_bodies,
+                    &self.solver_states,
                     pair.static_friction,
                     pair.dynamic_friction,
                     s.static_friction_speed,
                 );
+                // Static contacts are twice as stiff (Box2D v3); both stiffen with load.
+                let base_hz = if a_dyn && b_dyn { hertz } else { 2.0 * hertz };
+                let pts = &self.constraint_points[first..first + c.count as usize];
+                let (load, own) = pts.iter().fold((0.0f32, 0.0f32), |(p, m), cp| {
+                    (p + cp.normal_impulse, m + cp.normal_mass * g_h)
+                });
+                let ratio = if own > 0.0 { load / own } else { 1.0 };
+                c.softness =
+                    Softness::for_load(base_hz, ratio, max_hertz, s.contact_damping_ratio, h);
                 self.constraints.push(c);
             }
         }
@@ -144,7 +186,6 @@ impl PhysicsWorld {
             substeps,
             iterations: s.solver_iterations,
             relax_iterations: s.relax_iterations,
-            slop: s.linear_slop,
             max_push: s.max_contact_push_speed,
             restitution_threshold: s.restitution_threshold,
             max_linear_speed: s.max_linear_speed,
@@ -152,21 +193,31 @@ impl PhysicsWorld {
         };
         solve_substeps(
             &mut self.solver_bodies,
-            &self.constraints,
+            &mut self.solver_states,
+            &mut self.constraints,
             &mut self.constraint_points,
             &params,
         );
 
-        // Store impulses for warm starting and events.
+        // Store impulses for warm starting and events; a manifold's friction is shared among
+        // its points in proportion to their normal impulses.
         for c in &self.constraints {
             let m = &mut self.narrowphase.pairs[c.pair as usize].manifolds[c.manifold as usize];
             let pts =
                 &self.constraint_points[c.first as usize..c.first as usize + c.count as usize];
+            let f = &c.friction;
+            let tangent = c.tangent[0] * f.tangent_impulse[0] + c.tangent[1] * f.tangent_impulse[1];
+            let total: f32 = pts.iter().map(|cp| cp.normal_impulse).sum();
             for (k, cp) in pts.iter().enumerate() {
+                let share = if total > 0.0 {
+                    cp.normal_impulse / total
+                } else {
+                    1.0 / f32::from(c.count)
+                };
                 let p = &mut m.points[k];
                 p.normal_impulse = cp.normal_impulse;
-                p.tangent_impulse =
-                    c.tangent[0] * cp.tangent_impulse[0] + c.tangent[1] * cp.tangent_impulse[1];
+                p.tangent_impulse = tangent * share;
+                p.twist_impulse = f.twist_impulse * share;
                 p.max_normal_impulse = cp.max_normal_impulse;
             }
         }

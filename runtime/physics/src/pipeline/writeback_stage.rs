@@ -17,6 +17,7 @@ impl PhysicsWorld {
         let mut ccd_time = std::time::Duration::ZERO;
         for k in 1..self.solver_bodies.len() {
             let sb = self.solver_bodies[k];
+            let st = self.solver_states[k];
             let idx = self.solver_handles[k];
             let handle = self.bodies.handle_of(idx);
             let Some(b) = self.bodies.arena.get_by_index_mut(idx) else {
@@ -24,15 +25,15 @@ impl PhysicsWorld {
             };
             let com0 = b.pose.transform_point(b.mass.local_com);
             let rot = (sb.dq * sb.q0).normalize();
-            let com = com0 + sb.dp;
-            let finite = com.is_finite() && rot.is_finite() && sb.v.is_finite() && sb.w.is_finite();
+            let com = com0 + st.dp;
+            let finite = com.is_finite() && rot.is_finite() && st.v.is_finite() && st.w.is_finite();
             if !finite {
                 bad.push(handle);
                 continue;
             }
             let mut pose = Pose::new(com - rot * b.mass.local_com, rot);
-            b.linvel = sb.v;
-            b.angvel = sb.w;
+            b.linvel = st.v;
+            b.angvel = st.w;
             if b.body_type == BodyType::Kinematic {
                 if let Some(t) = b.kinematic_target.take() {
                     pose = t;
@@ -78,8 +79,7 @@ impl PhysicsWorld {
                 s.max_speculative_distance
             });
             let disp = v.normalize_or_zero() * sweep_len;
-            let colliders = b.colliders.clone();
-            for ch in colliders {
+            for &ch in &b.colliders {
                 if let Some(c) = self.colliders.get_mut(ch) {
                     let p = pose.mul_pose(&c.local_pose);
                     c.aabb = c.shape.aabb(&p);
@@ -94,11 +94,8 @@ impl PhysicsWorld {
         for h in bad {
             self.quarantine(h);
         }
-        // Forces are cleared after every step, also on bodies that did not move.
-        for (_, _, b) in self.bodies.arena.iter_mut() {
-            b.force = Vec3::ZERO;
-            b.torque = Vec3::ZERO;
-        }
+        // Forces live only on awake dynamic bodies (adding one wakes the body), which the loop
+        // above cleared: sleeping bodies are not visited.
         self.output.counters.ccd = ccd_time;
     }
 }

@@ -1,5 +1,6 @@
 //! Soft-step impulse solver: [`Softness`], solver bodies, contact constraints, substep loop.
 
+pub(crate) mod body_state;
 pub(crate) mod contact_constraint;
 pub mod softness;
 pub(crate) mod solve;

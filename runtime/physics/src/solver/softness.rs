@@ -1,5 +1,13 @@
 //! [`Softness`]: soft-constraint coefficients (mass-spring-damper) for one substep size.
 
+/// Load stiffening never goes above this fraction of the substep rate, 1/s per Hz (above it
+/// the bench's 20-row pyramid jitters apart at 2 substeps).
+pub const LOAD_STIFFENING_MAX_SUBSTEP_FRACTION: f32 = 0.125;
+
+/// … nor above this fraction of the step rate (contact geometry is refreshed once per step;
+/// stiffer contacts than this made the pyramid jitter apart at 60 Hz × 4).
+pub const LOAD_STIFFENING_MAX_STEP_FRACTION: f32 = 0.5;
+
 /// Coefficients of a soft constraint with stiffness `hertz` and damping ratio `zeta`
 /// at substep `h` (Box2D v3 / "soft step" formulation):
 /// `ω = 2π·hertz`, `a1 = 2ζ + hω`, `a2 = hω·a1`, `a3 = 1/(1 + a2)`,
@@ -37,5 +45,25 @@ impl Softness {
             mass_scale: a2 * a3,
             impulse_scale: a3,
         }
+    }
+
+    /// Stiffest contact, Hz, that [`Softness::for_load`] may reach at substep `h` and step
+    /// `dt`: `min(h⁻¹ · 0.125, dt⁻¹ · 0.5)` (see the two constants).
+    #[must_use]
+    pub fn max_load_hertz(h: f32, dt: f32) -> f32 {
+        (LOAD_STIFFENING_MAX_SUBSTEP_FRACTION / h).min(LOAD_STIFFENING_MAX_STEP_FRACTION / dt)
+    }
+
+    /// Contact softness scaled to the load it carries. `load_ratio` is the contact's
+    /// warm-started normal impulse over the impulse its own effective mass would need against
+    /// gravity (`Σλ / Σ(m_eff · g · h)`): about 1 for a body resting alone, 19 under the
+    /// bottom box of a 20-box stack, 200 under a light cube holding a 400× heavier plank. The
+    /// stiffness grows with `√ratio` so that loaded contacts deflect about as much as a body
+    /// resting alone (`g / ω²`) instead of `ratio` times more, capped at `max_hertz` (never
+    /// below `base_hertz`).
+    #[must_use]
+    pub fn for_load(base_hertz: f32, load_ratio: f32, max_hertz: f32, zeta: f32, h: f32) -> Self {
+        let hz = (base_hertz * load_ratio.max(1.0).sqrt()).min(max_hertz.max(base_hertz));
+        Self::new(hz, zeta, h)
     }
 }

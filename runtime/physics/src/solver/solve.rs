@@ -3,6 +3,7 @@
 
 use glam::{Quat, Vec3};
 
+use super::body_state::BodyState;
 use super::contact_constraint::{
     apply_restitution, solve, warm_start, ConstraintPoint, ContactConstraint,
 };
@@ -15,7 +16,6 @@ pub(crate) struct SolveParams {
     pub substeps: u32,
     pub iterations: u32,
     pub relax_iterations: u32,
-    pub slop: f32,
     pub max_push: f32,
     pub restitution_threshold: f32,
     pub max_linear_speed: f32,
@@ -25,7 +25,8 @@ pub(crate) struct SolveParams {
 /// Runs all substeps over awake bodies and their constraints.
 pub(crate) fn solve_substeps(
     bodies: &mut [SolverBody],
-    constraints: &[ContactConstraint],
+    states: &mut [BodyState],
+    constraints: &mut [ContactConstraint],
     points: &mut [ConstraintPoint],
     p: &SolveParams,
 ) {
@@ -34,47 +35,33 @@ pub(crate) fn solve_substeps(
     let h = p.dt / substeps as f32;
     let inv_h = 1.0 / h;
     for _ in 0..substeps {
-        integrate_velocities(bodies, h, p);
-        for c in constraints {
-            warm_start(c, &points[range(c)], bodies);
+        integrate_velocities(bodies, states, h, p);
+        for c in constraints.iter() {
+            warm_start(c, &points[range(c)], states);
         }
         for _ in 0..p.iterations.max(1) {
-            for c in constraints {
-                solve(
-                    c,
-                    &mut points[range(c)],
-                    bodies,
-                    inv_h,
-                    true,
-                    p.slop,
-                    p.max_push,
-                );
+            for c in constraints.iter_mut() {
+                let r = range(c);
+                solve(c, &mut points[r.clone()], states, inv_h, true, p.max_push);
             }
         }
-        integrate_positions(bodies, h);
+        integrate_positions(bodies, states, h);
         for _ in 0..p.relax_iterations {
-            for c in constraints {
-                solve(
-                    c,
-                    &mut points[range(c)],
-                    bodies,
-                    inv_h,
-                    false,
-                    p.slop,
-                    p.max_push,
-                );
+            for c in constraints.iter_mut() {
+                let r = range(c);
+                solve(c, &mut points[r.clone()], states, inv_h, false, p.max_push);
             }
         }
     }
-    for c in constraints {
-        apply_restitution(c, &mut points[range(c)], bodies, p.restitution_threshold);
+    for c in constraints.iter() {
+        apply_restitution(c, &mut points[range(c)], states, p.restitution_threshold);
     }
 }
 
-fn integrate_velocities(bodies: &mut [SolverBody], h: f32, p: &SolveParams) {
-    for b in bodies.iter_mut().skip(1) {
-        let mut v = b.v + b.lin_acc * h;
-        let mut w = b.w + b.ang_acc * h;
+fn integrate_velocities(bodies: &[SolverBody], states: &mut [BodyState], h: f32, p: &SolveParams) {
+    for (b, st) in bodies.iter().zip(states.iter_mut()).skip(1) {
+        let mut v = st.v + b.lin_acc * h;
+        let mut w = st.w + b.ang_acc * h;
         v *= 1.0 / (1.0 + h * b.lin_damp);
         w *= 1.0 / (1.0 + h * b.ang_damp);
         let vl = v.length();
@@ -85,16 +72,16 @@ fn integrate_velocities(bodies: &mut [SolverBody], h: f32, p: &SolveParams) {
         if wl > p.max_angular_speed {
             w *= p.max_angular_speed / wl;
         }
-        b.v = v * b.lin_mask;
-        b.w = w * b.ang_mask;
+        st.v = v * b.lin_mask;
+        st.w = w * b.ang_mask;
     }
 }
 
-fn integrate_positions(bodies: &mut [SolverBody], h: f32) {
-    for b in bodies.iter_mut().skip(1) {
-        b.dp += b.v * h;
-        b.dtheta += b.w * h;
-        let w = b.w;
+fn integrate_positions(bodies: &mut [SolverBody], states: &mut [BodyState], h: f32) {
+    for (b, st) in bodies.iter_mut().zip(states.iter_mut()).skip(1) {
+        st.dp += st.v * h;
+        st.dtheta += st.w * h;
+        let w = st.w;
         if w == Vec3::ZERO {
             continue;
         }
@@ -112,7 +99,7 @@ fn integrate_positions(bodies: &mut [SolverBody], h: f32) {
             // Free rotation keeps world angular momentum L = R I Rᵀ ω.
             let q_new = b.dq * b.q0;
             let l = q_old * (b.inertia_local * (q_old.inverse() * w));
-            b.w = (q_new * (b.inv_inertia_local * (q_new.inverse() * l))) * b.ang_mask;
+            st.w = (q_new * (b.inv_inertia_local * (q_new.inverse() * l))) * b.ang_mask;
         }
     }
 }

@@ -1,24 +1,14 @@
-//! [`SolverBody`]: per-step velocity state of an awake body inside the solver.
+//! [`SolverBody`]: per-step constants of an awake body inside the solver (its changing
+//! state lives in [`super::body_state::BodyState`]).
 
 use glam::{Mat3, Quat, Vec3};
 
-/// Velocity-level state of one awake dynamic or kinematic body during a step.
+/// Constants of one awake dynamic or kinematic body during a step, and its rotation.
 /// Index 0 of the solver array is a dummy for static/sleeping bodies (all zero).
 #[derive(Clone, Copy, Debug)]
 pub(crate) struct SolverBody {
-    /// Linear velocity of the centre of mass, m/s.
-    pub v: Vec3,
-    /// Angular velocity, rad/s.
-    pub w: Vec3,
-    /// Displacement of the centre of mass since the step began, m.
-    pub dp: Vec3,
     /// Rotation since the step began (world frame, applied before the start rotation).
     pub dq: Quat,
-    /// Accumulated rotation vector since the step began (Σ ω·h), for linearised contact
-    /// separation updates.
-    pub dtheta: Vec3,
-    /// Inverse mass per world axis (0 on locked axes), 1/kg.
-    pub inv_mass: Vec3,
     /// World inverse inertia (locked rows/columns zeroed), fixed for the step.
     pub inv_i: Mat3,
     /// Constant linear acceleration (gravity + force / m), m/s².
@@ -46,12 +36,7 @@ pub(crate) struct SolverBody {
 impl SolverBody {
     /// The static dummy.
     pub const STATIC: Self = Self {
-        v: Vec3::ZERO,
-        w: Vec3::ZERO,
-        dp: Vec3::ZERO,
         dq: Quat::IDENTITY,
-        dtheta: Vec3::ZERO,
-        inv_mass: Vec3::ZERO,
         inv_i: Mat3::ZERO,
         lin_acc: Vec3::ZERO,
         ang_acc: Vec3::ZERO,

@@ -71,9 +71,13 @@ pub struct HostArgs {
     /// Stop after N frames (without it: until the window is closed or a plugin quits).
     #[arg(long, value_name = "N")]
     pub frames: Option<u64>,
-    /// Fixed simulation steps per second.
-    #[arg(long, value_name = "HZ", default_value_t = 60.0)]
-    pub fixed_hz: f64,
+    /// Fixed simulation steps per second [default: the physics preset's, 60 for balanced].
+    #[arg(long, value_name = "HZ")]
+    pub fixed_hz: Option<f64>,
+    /// Physics accuracy preset, instead of the scene's: fast (30 Hz x 2 substeps), balanced
+    /// (60 Hz x 4) or precise (120 Hz x 4). See docs/physics-accuracy.md.
+    #[arg(long, value_name = "PRESET")]
+    pub physics: Option<onyx_runtime::PhysicsPreset>,
     /// Most fixed steps per frame (the spiral-of-death guard).
     #[arg(long, value_name = "N", default_value_t = 8)]
     pub max_steps: u32,

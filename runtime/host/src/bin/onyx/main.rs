@@ -13,7 +13,7 @@ use onyx_runtime::plugins::{plugin_search, PluginSearchPath};
 use onyx_runtime::render::{save_png, RenderSystem};
 use onyx_runtime::scene::write_atomically;
 use onyx_runtime::window::{run_windowed, WindowOptions};
-use onyx_runtime::{Host, HostConfig, PluginStatus};
+use onyx_runtime::{Host, HostConfig, PluginStatus, ScenePhysics};
 
 use cli::{Cli, Command, HostArgs, RunArgs};
 
@@ -28,10 +28,16 @@ enum Failure {
 fn main() -> ExitCode {
     let filter = tracing_subscriber::EnvFilter::try_from_default_env()
         .unwrap_or_else(|_| tracing_subscriber::EnvFilter::new("info"));
-    tracing_subscriber::fmt()
-        .with_env_filter(filter)
-        .with_writer(std::io::stderr)
-        .init();
+    {
+        use tracing_subscriber::layer::SubscriberExt as _;
+        use tracing_subscriber::util::SubscriberInitExt as _;
+        // stderr for people, the console ring buffer for tools (the editor's console panel).
+        tracing_subscriber::registry()
+            .with(filter)
+            .with(tracing_subscriber::fmt::layer().with_writer(std::io::stderr))
+            .with(onyx_runtime::console::ConsoleLayer)
+            .init();
+    }
     let cli = Cli::parse();
     let result = match cli.command {
         Command::Run(args) => run(args),
@@ -59,7 +65,7 @@ fn main() -> ExitCode {
 fn host_config(args: &HostArgs) -> HostConfig {
     HostConfig {
         clock: ClockSettings {
-            fixed_hz: args.fixed_hz,
+            fixed_hz: args.fixed_hz.unwrap_or(60.0),
             max_steps_per_frame: args.max_steps,
             ..Default::default()
         },
@@ -104,6 +110,20 @@ fn start_host(args: &HostArgs, libraries: &[std::path::PathBuf]) -> Result<Host,
         host.load_scene(scene)
             .map_err(|e| Failure::Start(anyhow::Error::new(e)))?;
     }
+    // The command line wins over the scene: its preset replaces the scene's, its rate
+    // overrides either.
+    let chosen = match (args.physics, host.physics().scene_physics()) {
+        (Some(preset), _) => Some(ScenePhysics::preset(preset)),
+        (None, Some(from_scene)) => Some(from_scene.clone()),
+        (None, None) => None,
+    };
+    if let Some(mut physics) = chosen {
+        physics.fixed_hz = args.fixed_hz.or(physics.fixed_hz);
+        physics
+            .validate()
+            .map_err(|e| Failure::Start(anyhow::anyhow!(e)))?;
+        host.set_physics(physics);
+    }
     Ok(host)
 }
 
@@ -123,7 +143,7 @@ fn run(run_args: RunArgs) -> Result<(), Failure> {
     let mut host = start_host(args, &[])?;
 
     let (frames, render) = if args.headless {
-        let dt = 1.0 / args.fixed_hz;
+        let dt = host.clock_mut().fixed_delta();
         let mut frames = 0u64;
         while args.frames.is_none_or(|n| frames < n) {
             frames += 1;

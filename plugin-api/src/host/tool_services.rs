@@ -1,0 +1,105 @@
+//! [`ToolServices`]: the host services tools (the editor first) use — world introspection,
+//! scenes, plugins, diagnostics, console, play mode, scripts, viewport — in plain Rust.
+
+use crate::glam::Vec2;
+use crate::host::PlayCommand;
+use crate::tools::{
+    ComponentEntry, Diagnostics, EntityList, LogLine, PlayMode, PluginInfo, Ray, RenderOverrides,
+    ScriptInfo,
+};
+use crate::{CtxError, Entity};
+
+fn unsupported(what: &str) -> CtxError {
+    CtxError::Invalid {
+        message: format!("this host does not offer `{what}`"),
+    }
+}
+
+/// The tool half of the services behind [`Ctx`](crate::Ctx). Every method has a default
+/// (an error or an empty answer), so a host that serves only the basics implements nothing.
+/// Implementations must not panic.
+#[allow(unused_variables)]
+pub trait ToolServices {
+    /// Every entity with its name.
+    fn entity_list(&mut self) -> EntityList {
+        EntityList::default()
+    }
+    /// Every component of `entity`, built-in and plugin, as JSON text.
+    fn components_of(&mut self, entity: Entity) -> Result<Vec<ComponentEntry>, CtxError> {
+        Err(unsupported("components_of"))
+    }
+    /// Parses `json` as component `type_name` and writes it (validated).
+    fn set_component_json(
+        &mut self,
+        entity: Entity,
+        type_name: &str,
+        json: &str,
+    ) -> Result<(), CtxError> {
+        Err(unsupported("set_component_json"))
+    }
+    /// Adds component `type_name` with its default value.
+    fn add_component(&mut self, entity: Entity, type_name: &str) -> Result<(), CtxError> {
+        Err(unsupported("add_component"))
+    }
+    /// Removes component `type_name`.
+    fn remove_component(&mut self, entity: Entity, type_name: &str) -> Result<(), CtxError> {
+        Err(unsupported("remove_component"))
+    }
+    /// Replaces the world with an empty one.
+    fn new_scene(&mut self) -> Result<(), CtxError> {
+        Err(unsupported("new_scene"))
+    }
+    /// Replaces the world with the scene file at `path` (untouched on error).
+    fn open_scene(&mut self, path: &str) -> Result<(), CtxError> {
+        Err(unsupported("open_scene"))
+    }
+    /// Saves the world to `path`, atomically.
+    fn save_scene(&mut self, path: &str) -> Result<(), CtxError> {
+        Err(unsupported("save_scene"))
+    }
+    /// The file the world was last opened from or saved to.
+    fn scene_path(&mut self) -> Option<String> {
+        None
+    }
+    /// The loaded plugins.
+    fn plugin_infos(&mut self) -> Vec<PluginInfo> {
+        Vec::new()
+    }
+    /// Figures of the last frame.
+    fn diagnostics(&mut self) -> Diagnostics {
+        Diagnostics::default()
+    }
+    /// Console lines with a sequence number above `seq`.
+    fn log_lines_since(&mut self, seq: u64) -> Vec<LogLine> {
+        Vec::new()
+    }
+    /// Changes the play session.
+    fn play_command(&mut self, command: PlayCommand) {}
+    /// The play session's state.
+    fn play_mode(&self) -> PlayMode {
+        PlayMode::Playing
+    }
+    /// Registers script `name`, run by the calling plugin.
+    fn register_script(
+        &mut self,
+        name: &str,
+        default_params: serde_json::Value,
+    ) -> Result<(), CtxError> {
+        Err(unsupported("register_script"))
+    }
+    /// Every registered script.
+    fn registered_scripts(&mut self) -> Vec<ScriptInfo> {
+        Vec::new()
+    }
+    /// The ray through `point` (pixels from the top left) of a `size`-pixel view of the
+    /// active camera.
+    fn screen_ray(&mut self, point: Vec2, size: Vec2) -> Option<Ray> {
+        None
+    }
+    /// Sets the view switches.
+    fn set_render_overrides(&mut self, overrides: RenderOverrides) {}
+    /// The view switches.
+    fn render_overrides(&self) -> RenderOverrides {
+        RenderOverrides::default()
+    }
+}
