@@ -33,6 +33,10 @@ pub struct ContactPair {
     pub(crate) min_separation: f32,
     /// Manifolds were regenerated (or refreshed) this step.
     pub(crate) updated: bool,
+    /// Whether a point of the pair pushed (`max_normal_impulse > 0`), noted by the solve
+    /// stage while it writes the impulses back (`None` when the pair was not solved this
+    /// step), so that touch tracking need not walk the points again.
+    pub(crate) solved_pushing: Option<bool>,
     /// Pose of B's body in A's body frame when the manifolds were last generated
     /// (translation, rotation); `None` until the first generation.
     pub(crate) generated_at: Option<(glam::Vec3, glam::Quat)>,

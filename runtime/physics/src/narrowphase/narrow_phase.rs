@@ -52,7 +52,11 @@ pub struct NarrowPhase {
 }
 
 fn key(a: ColliderHandle, b: ColliderHandle) -> u64 {
-    let (x, y) = (a.index().min(b.index()), a.index().max(b.index()));
+    index_key(a.index(), b.index())
+}
+
+fn index_key(a: u32, b: u32) -> u64 {
+    let (x, y) = (a.min(b), a.max(b));
     u64::from(x) << 32 | u64::from(y)
 }
 
@@ -76,6 +80,13 @@ impl NarrowPhase {
         let p = &self.pairs[i as usize];
         (p.collider_a == a && p.collider_b == b || p.collider_a == b && p.collider_b == a)
             .then_some(p)
+    }
+
+    /// True when the colliders at arena indices `a` and `b` already have a pair (removing a
+    /// collider removes its pairs, so an index names a live collider here).
+    #[inline]
+    pub(crate) fn has_pair_of_indices(&self, a: u32, b: u32) -> bool {
+        self.index.contains_key(&index_key(a, b))
     }
 
     /// Adds a pair unless it exists. Returns true when added.
@@ -106,6 +117,7 @@ impl NarrowPhase {
             dynamic_friction: fd,
             min_separation: f32::MAX,
             updated: false,
+            solved_pushing: None,
             generated_at: None,
         });
         true

@@ -10,6 +10,11 @@ impl PhysicsWorld {
         self.broadphase.find_pairs(&mut pairs);
         let mut added = 0;
         for &(ia, ib) in &pairs {
+            // Most reports of a moved proxy are pairs that exist: skip them before touching
+            // the colliders and bodies (random memory accesses).
+            if self.narrowphase.has_pair_of_indices(ia, ib) {
+                continue;
+            }
             let (Some(ca), Some(cb)) = (
                 self.colliders.arena.get_by_index(ia),
                 self.colliders.arena.get_by_index(ib),

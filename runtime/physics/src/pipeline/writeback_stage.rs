@@ -25,15 +25,15 @@ impl PhysicsWorld {
             };
             let com0 = b.pose.transform_point(b.mass.local_com);
             let rot = (sb.dq * sb.q0).normalize();
-            let com = com0 + st.dp;
+            let com = com0 + Vec3::from(st.dp);
             let finite = com.is_finite() && rot.is_finite() && st.v.is_finite() && st.w.is_finite();
             if !finite {
                 bad.push(handle);
                 continue;
             }
             let mut pose = Pose::new(com - rot * b.mass.local_com, rot);
-            b.linvel = st.v;
-            b.angvel = st.w;
+            b.linvel = st.v.into();
+            b.angvel = st.w.into();
             if b.body_type == BodyType::Kinematic {
                 if let Some(t) = b.kinematic_target.take() {
                     pose = t;

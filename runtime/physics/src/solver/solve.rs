@@ -1,7 +1,7 @@
 //! [`solve_substeps`]: the soft-step loop (integrate velocities → warm start → solve →
 //! integrate positions → relax, per substep; restitution at the end).
 
-use glam::{Quat, Vec3};
+use glam::{Quat, Vec3, Vec3A};
 
 use super::body_state::BodyState;
 use super::contact_constraint::{
@@ -59,18 +59,21 @@ pub(crate) fn solve_substeps(
 }
 
 fn integrate_velocities(bodies: &[SolverBody], states: &mut [BodyState], h: f32, p: &SolveParams) {
+    let max_v2 = p.max_linear_speed * p.max_linear_speed;
+    let max_w2 = p.max_angular_speed * p.max_angular_speed;
     for (b, st) in bodies.iter().zip(states.iter_mut()).skip(1) {
         let mut v = st.v + b.lin_acc * h;
         let mut w = st.w + b.ang_acc * h;
-        v *= 1.0 / (1.0 + h * b.lin_damp);
-        w *= 1.0 / (1.0 + h * b.ang_damp);
-        let vl = v.length();
-        if vl > p.max_linear_speed {
-            v *= p.max_linear_speed / vl;
+        v *= b.lin_damp_factor;
+        w *= b.ang_damp_factor;
+        // Squared lengths against squared limits: no square root for the common case.
+        let vl2 = v.length_squared();
+        if vl2 > max_v2 {
+            v *= p.max_linear_speed / vl2.sqrt();
         }
-        let wl = w.length();
-        if wl > p.max_angular_speed {
-            w *= p.max_angular_speed / wl;
+        let wl2 = w.length_squared();
+        if wl2 > max_w2 {
+            w *= p.max_angular_speed / wl2.sqrt();
         }
         st.v = v * b.lin_mask;
         st.w = w * b.ang_mask;
@@ -82,7 +85,7 @@ fn integrate_positions(bodies: &mut [SolverBody], states: &mut [BodyState], h: f
         st.dp += st.v * h;
         st.dtheta += st.w * h;
         let w = st.w;
-        if w == Vec3::ZERO {
+        if w == Vec3A::ZERO {
             continue;
         }
         let q_old = b.dq * b.q0;
@@ -98,8 +101,8 @@ fn integrate_positions(bodies: &mut [SolverBody], states: &mut [BodyState], h: f
         if b.gyro {
             // Free rotation keeps world angular momentum L = R I Rᵀ ω.
             let q_new = b.dq * b.q0;
-            let l = q_old * (b.inertia_local * (q_old.inverse() * w));
-            st.w = (q_new * (b.inv_inertia_local * (q_new.inverse() * l))) * b.ang_mask;
+            let l = q_old * (b.inertia_local * (q_old.inverse() * Vec3::from(w)));
+            st.w = Vec3A::from(q_new * (b.inv_inertia_local * (q_new.inverse() * l))) * b.ang_mask;
         }
     }
 }

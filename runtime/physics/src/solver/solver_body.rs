@@ -1,7 +1,7 @@
 //! [`SolverBody`]: per-step constants of an awake body inside the solver (its changing
 //! state lives in [`super::body_state::BodyState`]).
 
-use glam::{Mat3, Quat, Vec3};
+use glam::{Mat3, Quat, Vec3A};
 
 /// Constants of one awake dynamic or kinematic body during a step, and its rotation.
 /// Index 0 of the solver array is a dummy for static/sleeping bodies (all zero).
@@ -12,17 +12,17 @@ pub(crate) struct SolverBody {
     /// World inverse inertia (locked rows/columns zeroed), fixed for the step.
     pub inv_i: Mat3,
     /// Constant linear acceleration (gravity + force / m), m/s².
-    pub lin_acc: Vec3,
+    pub lin_acc: Vec3A,
     /// Constant angular acceleration (I⁻¹ torque), rad/s².
-    pub ang_acc: Vec3,
-    /// Linear damping, 1/s.
-    pub lin_damp: f32,
-    /// Angular damping, 1/s.
-    pub ang_damp: f32,
+    pub ang_acc: Vec3A,
+    /// Linear damping factor per substep, `1 / (1 + h·c)` for damping `c` (1/s).
+    pub lin_damp_factor: f32,
+    /// Angular damping factor per substep, `1 / (1 + h·c)`.
+    pub ang_damp_factor: f32,
     /// 1 where translation is free, 0 where locked.
-    pub lin_mask: Vec3,
+    pub lin_mask: Vec3A,
     /// 1 where rotation is free, 0 where locked.
-    pub ang_mask: Vec3,
+    pub ang_mask: Vec3A,
     /// Orientation at step start.
     pub q0: Quat,
     /// Local inertia and its inverse (for angular-momentum-preserving free rotation).
@@ -38,12 +38,12 @@ impl SolverBody {
     pub const STATIC: Self = Self {
         dq: Quat::IDENTITY,
         inv_i: Mat3::ZERO,
-        lin_acc: Vec3::ZERO,
-        ang_acc: Vec3::ZERO,
-        lin_damp: 0.0,
-        ang_damp: 0.0,
-        lin_mask: Vec3::ZERO,
-        ang_mask: Vec3::ZERO,
+        lin_acc: Vec3A::ZERO,
+        ang_acc: Vec3A::ZERO,
+        lin_damp_factor: 1.0,
+        ang_damp_factor: 1.0,
+        lin_mask: Vec3A::ZERO,
+        ang_mask: Vec3A::ZERO,
         q0: Quat::IDENTITY,
         inertia_local: Mat3::ZERO,
         inv_inertia_local: Mat3::ZERO,
