@@ -1,0 +1,78 @@
+//! The Create menu's entities: their components as JSON.
+
+use onyx_plugin_api::glam::Vec3;
+use onyx_plugin_api::{Camera, Light, Material, MeshId, MeshRenderer, Transform};
+
+/// What the Create menu makes.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Primitive {
+    /// A name and a transform.
+    Empty,
+    /// A unit cube.
+    Cube,
+    /// A unit sphere.
+    Sphere,
+    /// A plane.
+    Plane,
+    /// A capsule.
+    Capsule,
+    /// A point light.
+    Light,
+    /// A perspective camera.
+    Camera,
+}
+
+impl Primitive {
+    /// Every kind, in menu order.
+    pub const ALL: [Primitive; 7] = [
+        Primitive::Empty,
+        Primitive::Cube,
+        Primitive::Sphere,
+        Primitive::Plane,
+        Primitive::Capsule,
+        Primitive::Light,
+        Primitive::Camera,
+    ];
+
+    /// The menu entry and the new entity's name.
+    pub fn label(self) -> &'static str {
+        match self {
+            Primitive::Empty => "Empty",
+            Primitive::Cube => "Cube",
+            Primitive::Sphere => "Sphere",
+            Primitive::Plane => "Plane",
+            Primitive::Capsule => "Capsule",
+            Primitive::Light => "Light",
+            Primitive::Camera => "Camera",
+        }
+    }
+
+    /// The components besides the name, as (type name, JSON), placed at `at`.
+    pub fn components(self, at: Vec3) -> Vec<(String, String)> {
+        let transform = Transform::from_translation(at);
+        let mut out = vec![json("Transform", &transform)];
+        let mesh = |id: MeshId| {
+            json(
+                "MeshRenderer",
+                &MeshRenderer::new(id).with_material(Material::color(0.8, 0.8, 0.8)),
+            )
+        };
+        match self {
+            Primitive::Empty => {}
+            Primitive::Cube => out.push(mesh(MeshId::CUBE)),
+            Primitive::Sphere => out.push(mesh(MeshId::SPHERE)),
+            Primitive::Plane => out.push(mesh(MeshId::PLANE)),
+            Primitive::Capsule => out.push(mesh(MeshId::CAPSULE)),
+            Primitive::Light => out.push(json("Light", &Light::point(10.0))),
+            Primitive::Camera => out.push(json("Camera", &Camera::perspective(0.8))),
+        }
+        out
+    }
+}
+
+fn json(type_name: &str, value: &impl serde::Serialize) -> (String, String) {
+    (
+        type_name.to_owned(),
+        serde_json::to_string(value).unwrap_or_else(|_| "null".to_owned()),
+    )
+}

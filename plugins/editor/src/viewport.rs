@@ -1,0 +1,521 @@
+//! The Viewport panel: the host-rendered scene, the editor's fly camera, click-to-select,
+//! view switches and the translate / rotate / scale gizmo.
+
+use onyx_plugin_api::glam::{EulerRot, Mat4, Quat, Vec2, Vec3, Vec4};
+use onyx_plugin_api::tools::RenderOverrides;
+use onyx_plugin_api::{
+    egui, gui, Camera, Ctx, Entity, MeshRenderer, Name, PlayMode, ShadingMode, Transform,
+};
+use serde::{Deserialize, Serialize};
+
+use crate::history::Command;
+use crate::state::EditorState;
+
+/// The name of the camera entity the editor drives.
+pub const EDITOR_CAMERA: &str = "Editor Camera";
+/// Vertical field of view of the editor camera, radians.
+const FOV_Y: f32 = 0.8;
+/// Fly speed, metres per second.
+const FLY_SPEED: f32 = 6.0;
+/// Radians per pixel of right-drag.
+const LOOK_SPEED: f32 = 0.005;
+/// Gizmo axis length on screen, as a share of the distance to the camera.
+const GIZMO_SCALE: f32 = 0.15;
+
+/// The editor camera's pose.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct FlyCamera {
+    /// Position, metres.
+    pub position: [f32; 3],
+    /// Turn about Y, radians.
+    pub yaw: f32,
+    /// Tilt, radians (negative looks down).
+    pub pitch: f32,
+}
+
+impl Default for FlyCamera {
+    fn default() -> Self {
+        Self {
+            position: [0.0, 4.0, 10.0],
+            yaw: 0.0,
+            pitch: -0.35,
+        }
+    }
+}
+
+impl FlyCamera {
+    fn rotation(&self) -> Quat {
+        Quat::from_euler(EulerRot::YXZ, self.yaw, self.pitch, 0.0)
+    }
+
+    /// Unit direction the camera looks along.
+    pub fn forward(&self) -> Vec3 {
+        self.rotation() * Vec3::NEG_Z
+    }
+
+    /// The camera entity's transform.
+    pub fn transform(&self) -> Transform {
+        Transform::from_translation(Vec3::from_array(self.position)).with_rotation(self.rotation())
+    }
+}
+
+/// Which gizmo the selection shows.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum GizmoMode {
+    /// Move along an axis (W).
+    #[default]
+    Translate,
+    /// Turn about an axis (E).
+    Rotate,
+    /// Scale along an axis (R).
+    Scale,
+}
+
+#[derive(Clone, Debug)]
+struct GizmoDrag {
+    entity: Entity,
+    axis: usize,
+    old_json: Option<String>,
+    start: Transform,
+    moved: Vec2,
+    screen_axis: Vec2,
+    world_length: f32,
+}
+
+/// The viewport's state.
+#[derive(Debug)]
+pub struct ViewportState {
+    /// The fly camera's pose.
+    pub camera: FlyCamera,
+    entity: Option<Entity>,
+    written: Option<Transform>,
+    /// The gizmo shown.
+    pub gizmo: GizmoMode,
+    drag: Option<GizmoDrag>,
+    /// Grid on.
+    pub grid: bool,
+    /// Physics debug lines on.
+    pub physics_debug: bool,
+    /// Shading of the whole view (`None`: each object's own).
+    pub shading: Option<ShadingMode>,
+    overrides_sent: Option<RenderOverrides>,
+}
+
+impl Default for ViewportState {
+    fn default() -> Self {
+        Self {
+            camera: FlyCamera::default(),
+            entity: None,
+            written: None,
+            gizmo: GizmoMode::default(),
+            drag: None,
+            grid: true,
+            physics_debug: false,
+            shading: None,
+            overrides_sent: None,
+        }
+    }
+}
+
+impl ViewportState {
+    /// Finds (by name) or makes the editor camera entity, makes it the view and moves it to
+    /// the fly camera's pose.
+    pub fn ensure_camera(&mut self, ctx: &mut Ctx) {
+        let alive = self.entity.is_some_and(|e| ctx.contains(e));
+        if !alive {
+            let list = ctx.entity_list();
+            let found = list
+                .iter()
+                .find(|(_, name)| *name == EDITOR_CAMERA)
+                .map(|(e, _)| e);
+            let entity = match found {
+                Some(e) => Some(e),
+                None => ctx
+                    .spawn((
+                        Name::new(EDITOR_CAMERA),
+                        self.camera.transform(),
+                        Camera::perspective(FOV_Y),
+                    ))
+                    .ok(),
+            };
+            if let Some(e) = entity {
+                if let Err(error) = ctx.set_camera(e) {
+                    ctx.warn(format!("cannot look through the editor camera: {error}"));
+                }
+            }
+            self.entity = entity;
+            self.written = None;
+        }
+        let transform = self.camera.transform();
+        if let Some(e) = self.entity {
+            if self.written != Some(transform) && ctx.set(e, transform).is_ok() {
+                self.written = Some(transform);
+            }
+        }
+        let overrides = self.overrides();
+        if self.overrides_sent != Some(overrides) {
+            ctx.set_render_overrides(overrides);
+            self.overrides_sent = Some(overrides);
+        }
+    }
+
+    /// The editor camera entity.
+    pub fn camera_entity(&self) -> Option<Entity> {
+        self.entity
+    }
+
+    fn overrides(&self) -> RenderOverrides {
+        let overrides = RenderOverrides::default()
+            .with_grid(self.grid)
+            .with_physics_debug(self.physics_debug);
+        match self.shading {
+            Some(mode) => overrides.with_shading(mode),
+            None => overrides,
+        }
+    }
+
+    /// Where Create puts a new entity: 5 m in front of the camera, on the ground.
+    pub fn spawn_point(&self) -> Vec3 {
+        let p = Vec3::from_array(self.camera.position) + self.camera.forward() * 5.0;
+        Vec3::new(p.x, p.y.max(0.5), p.z)
+    }
+}
+
+/// Draws the panel.
+pub fn show(ui: &mut egui::Ui, ctx: &mut Ctx, state: &mut EditorState) {
+    toolbar(ui, &mut state.viewport);
+    let response = gui::viewport(ui);
+    let rect = response.rect;
+    fly(ui, ctx, state, &response);
+    let view_proj = view_projection(&state.viewport.camera, rect);
+    let gizmo_took = gizmo(ui, ctx, state, &response, view_proj);
+    if response.clicked() && !gizmo_took {
+        pick(ui, ctx, state, &response);
+    }
+}
+
+fn toolbar(ui: &mut egui::Ui, view: &mut ViewportState) {
+    ui.horizontal(|ui| {
+        ui.checkbox(&mut view.grid, "Grid");
+        ui.checkbox(&mut view.physics_debug, "Physics debug");
+        egui::ComboBox::from_id_salt("view-shading")
+            .selected_text(match view.shading {
+                Some(mode) => format!("{mode:?}"),
+                None => "Materials".to_owned(),
+            })
+            .show_ui(ui, |ui| {
+                ui.selectable_value(&mut view.shading, None, "Materials");
+                for mode in [
+                    ShadingMode::Unlit,
+                    ShadingMode::LitLow,
+                    ShadingMode::Lit,
+                    ShadingMode::Normal,
+                    ShadingMode::Wireframe,
+                ] {
+                    ui.selectable_value(&mut view.shading, Some(mode), format!("{mode:?}"));
+                }
+            });
+        ui.separator();
+        ui.selectable_value(&mut view.gizmo, GizmoMode::Translate, "Move (W)");
+        ui.selectable_value(&mut view.gizmo, GizmoMode::Rotate, "Rotate (E)");
+        ui.selectable_value(&mut view.gizmo, GizmoMode::Scale, "Scale (R)");
+    });
+}
+
+/// Right mouse + WASD/QE flies, the wheel zooms, F focuses the selection, W/E/R pick the gizmo.
+fn fly(ui: &mut egui::Ui, ctx: &mut Ctx, state: &mut EditorState, response: &egui::Response) {
+    let hovered = response.hovered();
+    let cam = &mut state.viewport.camera;
+    let (looking, delta, dt, scroll) = ui.input(|i| {
+        (
+            i.pointer.secondary_down(),
+            i.pointer.delta(),
+            i.stable_dt.min(0.1),
+            i.smooth_scroll_delta.y,
+        )
+    });
+    let looking = looking && (hovered || response.dragged_by(egui::PointerButton::Secondary));
+    if looking {
+        cam.yaw -= delta.x * LOOK_SPEED;
+        cam.pitch = (cam.pitch - delta.y * LOOK_SPEED).clamp(-1.55, 1.55);
+        let rotation = Quat::from_euler(EulerRot::YXZ, cam.yaw, cam.pitch, 0.0);
+        let mut step = Vec3::ZERO;
+        ui.input(|i| {
+            for (key, dir) in [
+                (egui::Key::W, Vec3::NEG_Z),
+                (egui::Key::S, Vec3::Z),
+                (egui::Key::A, Vec3::NEG_X),
+                (egui::Key::D, Vec3::X),
+                (egui::Key::E, Vec3::Y),
+                (egui::Key::Q, Vec3::NEG_Y),
+            ] {
+                if i.key_down(key) {
+                    step += dir;
+                }
+            }
+        });
+        let fast = if ui.input(|i| i.modifiers.shift) { 3.0 } else { 1.0 };
+        let moved = rotation * step * FLY_SPEED * fast * dt;
+        cam.position = (Vec3::from_array(cam.position) + moved).to_array();
+    } else if hovered && !ui.ctx().egui_wants_keyboard_input() {
+        ui.input(|i| {
+            if i.key_pressed(egui::Key::W) {
+                state.viewport.gizmo = GizmoMode::Translate;
+            }
+            if i.key_pressed(egui::Key::E) {
+                state.viewport.gizmo = GizmoMode::Rotate;
+            }
+            if i.key_pressed(egui::Key::R) {
+                state.viewport.gizmo = GizmoMode::Scale;
+            }
+        });
+    }
+    if hovered && scroll != 0.0 {
+        let cam = &mut state.viewport.camera;
+        let moved = cam.forward() * scroll * 0.01;
+        cam.position = (Vec3::from_array(cam.position) + moved).to_array();
+    }
+    let focus = hovered && ui.input(|i| i.key_pressed(egui::Key::F));
+    if focus {
+        if let Some(target) = state
+            .primary()
+            .and_then(|e| ctx.get::<Transform>(e).ok())
+        {
+            let cam = &mut state.viewport.camera;
+            let distance = 3.0 + target.scale.max_element() * 2.0;
+            cam.position = (target.translation - cam.forward() * distance).to_array();
+        }
+    }
+}
+
+fn view_projection(cam: &FlyCamera, rect: egui::Rect) -> Mat4 {
+    let aspect = (rect.width() / rect.height().max(1.0)).max(0.01);
+    // Right-handed, depth 0..1 (wgpu), as the renderer builds it.
+    let (near, far) = (0.1f32, 1000.0f32);
+    let f = 1.0 / (FOV_Y * 0.5).tan();
+    let range = far / (near - far);
+    let proj = Mat4::from_cols(
+        Vec4::new(f / aspect, 0.0, 0.0, 0.0),
+        Vec4::new(0.0, f, 0.0, 0.0),
+        Vec4::new(0.0, 0.0, range, -1.0),
+        Vec4::new(0.0, 0.0, range * near, 0.0),
+    );
+    proj * cam.transform().matrix().inverse()
+}
+
+fn to_screen(view_proj: Mat4, rect: egui::Rect, p: Vec3) -> Option<egui::Pos2> {
+    let clip = view_proj * p.extend(1.0);
+    if clip.w <= 1e-4 {
+        return None;
+    }
+    let ndc = clip.truncate() / clip.w;
+    Some(egui::pos2(
+        rect.min.x + (ndc.x + 1.0) * 0.5 * rect.width(),
+        rect.min.y + (1.0 - ndc.y) * 0.5 * rect.height(),
+    ))
+}
+
+fn pick(ui: &mut egui::Ui, ctx: &mut Ctx, state: &mut EditorState, response: &egui::Response) {
+    let Some(pointer) = response.interact_pointer_pos() else {
+        return;
+    };
+    let ppp = ui.ctx().pixels_per_point();
+    let local = (pointer - response.rect.min) * ppp;
+    let size = response.rect.size() * ppp;
+    let ray = ctx
+        .screen_ray(Vec2::new(local.x, local.y), Vec2::new(size.x, size.y))
+        .map(|r| (r.origin, r.direction))
+        .unwrap_or_else(|| own_ray(&state.viewport.camera, response.rect, pointer));
+    // Colliders first (exact), else the bounding spheres of visible meshes.
+    let hit = ctx
+        .raycast(ray.0, ray.1, 1000.0)
+        .map(|h| h.entity)
+        .or_else(|| pick_mesh(ctx, state.viewport.entity, ray.0, ray.1));
+    let multi = ui.input(|i| i.modifiers.command || i.modifiers.shift);
+    match hit {
+        Some(hit) if multi => state.toggle_selected(hit),
+        Some(hit) => state.select(hit),
+        None if !multi => state.selection.clear(),
+        None => {}
+    }
+}
+
+/// The ray through `pointer` seen through the fly camera.
+fn own_ray(cam: &FlyCamera, rect: egui::Rect, pointer: egui::Pos2) -> (Vec3, Vec3) {
+    let inverse = view_projection(cam, rect).inverse();
+    let ndc_x = (pointer.x - rect.min.x) / rect.width().max(1.0) * 2.0 - 1.0;
+    let ndc_y = 1.0 - (pointer.y - rect.min.y) / rect.height().max(1.0) * 2.0;
+    let near = inverse.project_point3(Vec3::new(ndc_x, ndc_y, 0.0));
+    let far = inverse.project_point3(Vec3::new(ndc_x, ndc_y, 1.0));
+    (near, (far - near).normalize_or(Vec3::NEG_Z))
+}
+
+/// The nearest entity with a visible mesh whose bounding sphere the ray meets.
+fn pick_mesh(ctx: &mut Ctx, skip: Option<Entity>, origin: Vec3, dir: Vec3) -> Option<Entity> {
+    let candidates: Vec<(Entity, Transform)> = ctx
+        .transforms()
+        .iter()
+        .map(|t| (t.entity, t.transform))
+        .filter(|(e, _)| Some(*e) != skip)
+        .collect();
+    let mut best: Option<(f32, Entity)> = None;
+    for (entity, t) in candidates {
+        let radius = 0.75 * t.scale.abs().max_element();
+        let to = t.translation - origin;
+        let along = to.dot(dir);
+        if along <= 0.0 || (to - dir * along).length_squared() > radius * radius {
+            continue;
+        }
+        if best.is_some_and(|(d, _)| d <= along) {
+            continue;
+        }
+        if ctx.get::<MeshRenderer>(entity).is_ok_and(|m| m.visible) {
+            best = Some((along, entity));
+        }
+    }
+    best.map(|(_, e)| e)
+}
+
+const AXES: [(Vec3, egui::Color32); 3] = [
+    (Vec3::X, egui::Color32::from_rgb(230, 70, 70)),
+    (Vec3::Y, egui::Color32::from_rgb(80, 210, 80)),
+    (Vec3::Z, egui::Color32::from_rgb(70, 120, 240)),
+];
+
+/// Draws the gizmo of the primary selection and drags it; whether the pointer used it.
+fn gizmo(
+    ui: &mut egui::Ui,
+    ctx: &mut Ctx,
+    state: &mut EditorState,
+    response: &egui::Response,
+    view_proj: Mat4,
+) -> bool {
+    let rect = response.rect;
+    let Some(entity) = state.primary() else {
+        state.viewport.drag = None;
+        return false;
+    };
+    if Some(entity) == state.viewport.entity {
+        return false;
+    }
+    let Ok(transform) = ctx.get::<Transform>(entity) else {
+        return false;
+    };
+    let origin = transform.translation;
+    let cam_pos = Vec3::from_array(state.viewport.camera.position);
+    let world_length = (origin.distance(cam_pos) * GIZMO_SCALE).max(0.01);
+    let Some(center) = to_screen(view_proj, rect, origin) else {
+        return false;
+    };
+    let painter = ui.painter_at(rect);
+    let mode = state.viewport.gizmo;
+    let mut ends = Vec::new();
+    for (axis, (dir, color)) in AXES.iter().enumerate() {
+        let dir = if mode == GizmoMode::Translate {
+            *dir
+        } else {
+            transform.rotation * *dir
+        };
+        let Some(end) = to_screen(view_proj, rect, origin + dir * world_length) else {
+            continue;
+        };
+        let active = state.viewport.drag.as_ref().is_some_and(|d| d.axis == axis);
+        let stroke = egui::Stroke::new(if active { 4.0 } else { 2.5 }, *color);
+        painter.line_segment([center, end], stroke);
+        match mode {
+            GizmoMode::Translate => {
+                painter.circle_filled(end, 5.0, *color);
+            }
+            GizmoMode::Rotate => {
+                painter.circle_stroke(end, 6.0, stroke);
+            }
+            GizmoMode::Scale => {
+                painter.rect_filled(egui::Rect::from_center_size(end, egui::vec2(9.0, 9.0)), 0.0, *color);
+            }
+        }
+        ends.push((axis, end));
+    }
+
+    let mut took = false;
+    if response.drag_started_by(egui::PointerButton::Primary) {
+        if let Some(pointer) = response.interact_pointer_pos() {
+            let nearest = ends
+                .iter()
+                .map(|(axis, end)| (*axis, *end, distance_to_segment(pointer, center, *end)))
+                .filter(|(_, _, d)| *d < 10.0)
+                .min_by(|a, b| a.2.total_cmp(&b.2));
+            if let Some((axis, end, _)) = nearest {
+                let screen = end - center;
+                state.viewport.drag = Some(GizmoDrag {
+                    entity,
+                    axis,
+                    old_json: component_json(ctx, entity, "Transform"),
+                    start: transform,
+                    moved: Vec2::ZERO,
+                    screen_axis: Vec2::new(screen.x, screen.y),
+                    world_length,
+                });
+                took = true;
+            }
+        }
+    }
+    if let Some(drag) = &mut state.viewport.drag {
+        took = true;
+        if drag.entity != entity {
+            state.viewport.drag = None;
+            return took;
+        }
+        let delta = response.drag_delta();
+        drag.moved += Vec2::new(delta.x, delta.y);
+        let len = drag.screen_axis.length().max(1.0);
+        let along = drag.moved.dot(drag.screen_axis / len) / len;
+        let mut t = drag.start;
+        let axis_dir = AXES[drag.axis].0;
+        match mode {
+            GizmoMode::Translate => t.translation += axis_dir * along * drag.world_length,
+            GizmoMode::Rotate => {
+                let across = drag.moved.perp_dot(drag.screen_axis / len) * 0.01;
+                t.rotation = (drag.start.rotation * Quat::from_axis_angle(axis_dir, across)).normalize();
+            }
+            GizmoMode::Scale => {
+                let factor = (1.0 + along).max(0.01);
+                let mut s = t.scale.to_array();
+                s[drag.axis] *= factor;
+                t.scale = Vec3::from_array(s);
+            }
+        }
+        if t.is_finite() {
+            let _ = ctx.set(entity, t);
+        }
+        if response.drag_stopped() || !ui.input(|i| i.pointer.primary_down()) {
+            let finished = state.viewport.drag.take();
+            if let Some(drag) = finished {
+                let new = component_json(ctx, entity, "Transform");
+                if new != drag.old_json && ctx.play_mode() == PlayMode::Edit {
+                    state.history.record(Command::SetComponent {
+                        entity,
+                        type_name: "Transform".to_owned(),
+                        old: drag.old_json,
+                        new,
+                    });
+                }
+            }
+        }
+    }
+    took
+}
+
+fn distance_to_segment(p: egui::Pos2, a: egui::Pos2, b: egui::Pos2) -> f32 {
+    let ab = b - a;
+    let t = ((p - a).dot(ab) / ab.length_sq().max(1e-6)).clamp(0.0, 1.0);
+    (a + ab * t).distance(p)
+}
+
+/// One component of `entity` as JSON.
+pub fn component_json(ctx: &mut Ctx, entity: Entity, type_name: &str) -> Option<String> {
+    ctx.components_of(entity)
+        .ok()?
+        .into_iter()
+        .find(|c| c.type_name == type_name)
+        .map(|c| c.value)
+}

@@ -1,0 +1,316 @@
+//! The editor plugin (`plugins/editor`), loaded as a real cdylib into a headless host and
+//! driven like a person: menus, inspector, undo/redo, scenes, play mode, reload, layout,
+//! a golden image, and a windowed run under Xvfb.
+
+use std::path::{Path, PathBuf};
+use std::process::Command;
+
+use onyx_plugin_api::egui::{pos2, Pos2};
+use onyx_plugin_api::{Key, MeshRenderer, Name, PlayMode, RigidBody, Transform};
+use onyx_runtime::{HeadlessHost, HostConfig};
+use onyx_tests::{assert_golden, onyx_binary, plugin_library, target_dir};
+use serde_json::Value;
+
+/// A host running the editor, its layout kept in `dir`.
+fn editor_host(dir: &Path) -> HeadlessHost {
+    let config = HostConfig::default().setting(
+        "editor",
+        "layout",
+        dir.join("layout.json").display().to_string(),
+    );
+    let mut host = HeadlessHost::with_config(config);
+    host.load_plugin_file(&plugin_library("editor"))
+        .expect("the editor loads");
+    host.step(3);
+    host
+}
+
+/// Clicks `label`, panicking with the label when it is not shown.
+fn click(host: &mut HeadlessHost, label: &str) {
+    assert!(host.click_widget(label), "no widget labelled `{label}`");
+    host.step(1);
+}
+
+/// Opens menu `menu` and clicks its entry `entry`.
+fn menu(host: &mut HeadlessHost, menu: &str, entry: &str) {
+    click(host, menu);
+    click(host, entry);
+}
+
+/// Clicks into the text field right of the label `label` and types `text`, then Enter.
+fn type_into_field_after(host: &mut HeadlessHost, label: &str, text: &str) {
+    let rect = host
+        .find_widget(label)
+        .unwrap_or_else(|| panic!("no label `{label}`"));
+    host.click_at(pos2(rect.right() + 60.0, rect.center().y));
+    host.type_text(text);
+    host.step(1);
+    host.press_key(Key::Enter);
+    host.step(2);
+}
+
+fn names(host: &HeadlessHost) -> Vec<String> {
+    let mut names: Vec<String> = host
+        .world()
+        .query::<&Name>()
+        .iter()
+        .map(|n| n.as_str().to_owned())
+        .collect();
+    names.sort();
+    names
+}
+
+fn create(host: &mut HeadlessHost, what: &str) {
+    menu(host, "Create", what);
+    host.step(1);
+}
+
+#[test]
+fn the_editor_enters_edit_mode_and_shows_its_panels() {
+    let dir = tempfile::tempdir().unwrap();
+    let host = editor_host(dir.path());
+    assert_eq!(host.host().play_mode(), PlayMode::Edit);
+    for panel in ["Hierarchy", "Inspector", "Viewport", "Console", "Diagnostics"] {
+        assert!(host.find_widget(panel).is_some(), "panel {panel} shown");
+    }
+    for m in ["File", "Edit", "Create", "Plugins", "View", "Play"] {
+        assert!(host.find_widget(m).is_some(), "menu {m} shown");
+    }
+}
+
+#[test]
+fn a_cube_created_from_the_menu_is_in_the_world() {
+    let dir = tempfile::tempdir().unwrap();
+    let mut host = editor_host(dir.path());
+    create(&mut host, "Cube");
+    let (cube, _) = host.find::<Transform>("Cube").expect("a Cube entity");
+    let mesh: MeshRenderer = host.get(cube).expect("it has a mesh");
+    assert_eq!(mesh.mesh, onyx_plugin_api::MeshId::CUBE);
+    // The hierarchy lists it and the inspector shows its transform.
+    assert!(host.find_widget("Cube").is_some());
+    assert!(host.find_widget("Transform").is_some());
+    assert!(host.find_widget("MeshRenderer").is_some());
+}
+
+#[test]
+fn renaming_in_the_inspector_undoes_and_redoes() {
+    let dir = tempfile::tempdir().unwrap();
+    let mut host = editor_host(dir.path());
+    create(&mut host, "Cube");
+    type_into_field_after(&mut host, "Name", "2");
+    assert!(host.find::<Transform>("Cube2").is_some(), "{:?}", names(&host));
+
+    menu(&mut host, "Edit", "Undo");
+    assert!(host.find::<Transform>("Cube").is_some(), "{:?}", names(&host));
+    menu(&mut host, "Edit", "Redo");
+    assert!(host.find::<Transform>("Cube2").is_some(), "{:?}", names(&host));
+
+    // Undo the rename and the creation: the cube is gone; redo brings it back.
+    menu(&mut host, "Edit", "Undo");
+    menu(&mut host, "Edit", "Undo");
+    assert!(host.find::<Transform>("Cube").is_none(), "{:?}", names(&host));
+    menu(&mut host, "Edit", "Redo");
+    assert!(host.find::<Transform>("Cube").is_some(), "{:?}", names(&host));
+}
+
+#[test]
+fn deleting_and_duplicating_are_undoable() {
+    let dir = tempfile::tempdir().unwrap();
+    let mut host = editor_host(dir.path());
+    create(&mut host, "Sphere");
+    menu(&mut host, "Edit", "Duplicate");
+    assert!(host.find::<Transform>("Sphere copy").is_some(), "{:?}", names(&host));
+    menu(&mut host, "Edit", "Delete");
+    assert!(host.find::<Transform>("Sphere copy").is_none());
+    menu(&mut host, "Edit", "Undo");
+    assert!(host.find::<Transform>("Sphere copy").is_some());
+}
+
+/// Every entity's name and components, without handles, sorted.
+fn world_summary(host: &HeadlessHost) -> Vec<String> {
+    let dump = host.dump_state();
+    let mut rows: Vec<String> = dump["entities"]
+        .as_array()
+        .expect("entities")
+        .iter()
+        .map(|e| {
+            let mut e = e.clone();
+            if let Value::Object(fields) = &mut e {
+                fields.remove("id");
+            }
+            e.to_string()
+        })
+        .collect();
+    rows.sort();
+    rows
+}
+
+#[test]
+fn save_new_and_open_give_back_the_same_world() {
+    let dir = tempfile::tempdir().unwrap();
+    let mut host = editor_host(dir.path());
+    create(&mut host, "Cube");
+    create(&mut host, "Light");
+    let before = world_summary(&host);
+    assert!(before.len() >= 3, "{before:?}");
+
+    let scene = dir.path().join("saved.ron");
+    menu(&mut host, "File", "Save As…");
+    type_into_field_after(&mut host, "File name", &scene.display().to_string());
+    click(&mut host, "Save");
+    assert!(scene.is_file(), "the scene was written");
+
+    menu(&mut host, "File", "New");
+    host.step(2);
+    assert!(host.find::<Transform>("Cube").is_none());
+
+    menu(&mut host, "File", "Open…");
+    type_into_field_after(&mut host, "File name", &scene.display().to_string());
+    click(&mut host, "Open");
+    host.step(2);
+    assert_eq!(world_summary(&host), before);
+}
+
+#[test]
+fn play_lets_a_body_fall_and_stop_puts_it_back() {
+    let dir = tempfile::tempdir().unwrap();
+    let mut host = editor_host(dir.path());
+    create(&mut host, "Cube");
+    menu(&mut host, "Add Component", "RigidBody");
+    let (cube, start) = host.find::<Transform>("Cube").expect("cube");
+    assert!(host.get::<RigidBody>(cube).is_some(), "the body was added");
+
+    host.step(10);
+    assert_eq!(host.get::<Transform>(cube), Some(start), "nothing moves in Edit");
+
+    click(&mut host, "Play");
+    assert_eq!(host.host().play_mode(), PlayMode::Playing);
+    host.step(30);
+    let fallen: Transform = host.get(cube).expect("still there");
+    assert!(
+        fallen.translation.y < start.translation.y - 0.1,
+        "it fell: {fallen:?}"
+    );
+
+    click(&mut host, "Stop");
+    host.step(1);
+    assert_eq!(host.host().play_mode(), PlayMode::Edit);
+    assert_eq!(host.get::<Transform>(cube), Some(start));
+}
+
+#[test]
+fn a_reloaded_editor_keeps_drawing_and_reacting() {
+    let dir = tempfile::tempdir().unwrap();
+    let mut host = editor_host(dir.path());
+    create(&mut host, "Cube");
+    host.host_mut().reload_plugin("editor").expect("reloads");
+    host.step(3);
+    assert_eq!(host.host().plugin("editor").map(|p| p.reloads()), Some(1));
+    assert!(host.find_widget("Hierarchy").is_some());
+    // The selection survived: the inspector still shows the cube.
+    assert!(host.find_widget("MeshRenderer").is_some());
+    create(&mut host, "Sphere");
+    assert!(host.find::<Transform>("Sphere").is_some());
+    assert_eq!(host.host().play_mode(), PlayMode::Edit, "a reload does not stop/start");
+}
+
+#[test]
+fn the_layout_is_saved_at_detach_and_restored_at_attach() {
+    let dir = tempfile::tempdir().unwrap();
+    let mut host = editor_host(dir.path());
+    menu(&mut host, "View", "Console");
+    host.step(1);
+    assert!(host.find_widget("Console").is_none(), "hidden");
+    drop(host);
+    let layout = dir.path().join("layout.json");
+    assert!(layout.is_file(), "written at detach");
+
+    let mut host = editor_host(dir.path());
+    assert!(host.find_widget("Console").is_none(), "still hidden");
+    menu(&mut host, "View", "Reset layout");
+    host.step(1);
+    assert!(host.find_widget("Console").is_some(), "back after a reset");
+}
+
+#[test]
+fn a_corrupt_layout_file_gives_the_default_layout() {
+    let dir = tempfile::tempdir().unwrap();
+    let layout = dir.path().join("layout.json");
+    std::fs::write(&layout, "{ not a layout").unwrap();
+    let host = editor_host(dir.path());
+    for panel in ["Hierarchy", "Inspector", "Viewport", "Console"] {
+        assert!(host.find_widget(panel).is_some(), "panel {panel} shown");
+    }
+    drop(host);
+    let text = std::fs::read_to_string(&layout).unwrap();
+    assert!(serde_json::from_str::<Value>(&text).is_ok(), "replaced by a good layout");
+}
+
+#[test]
+fn clicking_an_object_in_the_viewport_selects_it() {
+    let dir = tempfile::tempdir().unwrap();
+    let mut host = editor_host(dir.path());
+    create(&mut host, "Cube");
+    let (cube, _) = host.find::<Transform>("Cube").expect("cube");
+    create(&mut host, "Empty");
+    // The cube sits 5 m in front of the camera: the middle of the viewport image shows it.
+    let viewport = host.find_widget("Viewport").expect("viewport tab");
+    let toolbar = host.find_widget("Grid").expect("viewport toolbar");
+    let inspector = host.find_widget("Inspector").expect("inspector tab");
+    let console = host.find_widget("Console").expect("console tab");
+    let centre = pos2(
+        (viewport.left() + inspector.left()) / 2.0,
+        (toolbar.bottom() + console.top()) / 2.0,
+    );
+    host.click_at(centre);
+    host.step(1);
+    assert!(host.find_widget("MeshRenderer").is_some(), "the cube is inspected");
+    let _ = cube;
+}
+
+#[test]
+fn the_editor_matches_its_golden_image() {
+    let dir = tempfile::tempdir().unwrap();
+    let mut host = editor_host(dir.path());
+    create(&mut host, "Cube");
+    create(&mut host, "Light");
+    menu(&mut host, "Create", "Sphere");
+    host.step(1);
+    // Log lines hold paths and timings: filter them all out.
+    type_into_field_after(&mut host, "Search", "no line says this");
+    host.pointer_move(Pos2::new(1.0, 700.0));
+    host.step(3);
+    let image = host.screenshot(1280, 720).expect("lavapipe renders");
+    assert_golden("editor", &image);
+}
+
+#[test]
+fn a_windowed_editor_run_saves_a_screenshot() {
+    let xvfb_run = Path::new("/usr/bin/xvfb-run");
+    assert!(xvfb_run.exists(), "xvfb-run is missing");
+    let dir = tempfile::tempdir().unwrap();
+    let png = dir.path().join("editor.png");
+    let layout: PathBuf = dir.path().join("layout.json");
+    let repo = Path::new(env!("CARGO_MANIFEST_DIR")).join("..");
+    let out = Command::new(xvfb_run)
+        .args(["-a", "-s", "-screen 0 1280x720x24"])
+        .arg(onyx_binary())
+        .args(["run", "--plugin", "editor", "--scene", "assets/scenes/demo.ron"])
+        .args(["--frames", "20", "--size", "640x360", "--screenshot"])
+        .arg(&png)
+        .arg("--set")
+        .arg(format!("editor.layout={}", layout.display()))
+        .current_dir(repo)
+        .env("ONYX_PLUGIN_PATH", target_dir())
+        .env_remove("WAYLAND_DISPLAY")
+        .env("RUST_LOG", "warn")
+        .output()
+        .expect("onyx runs");
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(out.status.success(), "{err}");
+    let image = onyx_render::image::open(&png).unwrap().to_rgba8();
+    assert_eq!(image.dimensions(), (640, 360));
+    let first = image.get_pixel(0, 0);
+    assert!(image.pixels().any(|p| p != first), "not a blank image");
+    assert!(layout.is_file(), "the layout was saved when the editor detached");
+}
