@@ -1,7 +1,7 @@
 //! The Create menu's entities: their components as JSON.
 
 use onyx_plugin_api::glam::Vec3;
-use onyx_plugin_api::{Camera, Light, Material, MeshId, MeshRenderer, Transform};
+use onyx_plugin_api::{Camera, Collider, Light, Material, MeshId, MeshRenderer, Transform};
 
 /// What the Create menu makes.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -47,7 +47,9 @@ impl Primitive {
         }
     }
 
-    /// The components besides the name, as (type name, JSON), placed at `at`.
+    /// The components besides the name, as (type name, JSON), placed at `at`. Shapes come
+    /// with a collider of their mesh's size (static until a `RigidBody` is added; the plane's
+    /// is an infinite half-space, as a floor wants).
     pub fn components(self, at: Vec3) -> Vec<(String, String)> {
         let transform = Transform::from_translation(at);
         let mut out = vec![json("Transform", &transform)];
@@ -59,10 +61,22 @@ impl Primitive {
         };
         match self {
             Primitive::Empty => {}
-            Primitive::Cube => out.push(mesh(MeshId::CUBE)),
-            Primitive::Sphere => out.push(mesh(MeshId::SPHERE)),
-            Primitive::Plane => out.push(mesh(MeshId::PLANE)),
-            Primitive::Capsule => out.push(mesh(MeshId::CAPSULE)),
+            Primitive::Cube => {
+                out.push(mesh(MeshId::CUBE));
+                out.push(json("Collider", &Collider::cuboid(0.5, 0.5, 0.5)));
+            }
+            Primitive::Sphere => {
+                out.push(mesh(MeshId::SPHERE));
+                out.push(json("Collider", &Collider::sphere(0.5)));
+            }
+            Primitive::Plane => {
+                out.push(mesh(MeshId::PLANE));
+                out.push(json("Collider", &Collider::plane()));
+            }
+            Primitive::Capsule => {
+                out.push(mesh(MeshId::CAPSULE));
+                out.push(json("Collider", &Collider::capsule(0.5, 0.5)));
+            }
             Primitive::Light => out.push(json("Light", &Light::point(10.0))),
             Primitive::Camera => out.push(json("Camera", &Camera::perspective(0.8))),
         }

@@ -39,43 +39,47 @@ impl DiagnosticsState {
             d.frame_interval_ms, d.frame_ms
         ));
         self.plot(ui);
-        egui::Grid::new("diag-figures").striped(true).show(ui, |ui| {
-            let rows = [
-                ("fixed steps", d.fixed_steps.to_string()),
-                ("physics", format!("{:.3} ms", d.physics_ms)),
-                ("contacts", d.contacts.to_string()),
-                (
-                    "bodies awake / asleep",
-                    format!("{} / {}", d.awake_bodies, d.asleep_bodies),
-                ),
-                ("draw calls", d.draw_calls.to_string()),
-                ("triangles", d.triangles.to_string()),
-                ("instances", d.instances.to_string()),
-                ("entities", d.entities.to_string()),
-            ];
-            for (name, value) in rows {
-                ui.label(name);
-                ui.label(value);
-                ui.end_row();
-            }
-        });
-        ui.separator();
-        egui::Grid::new("diag-plugins").striped(true).show(ui, |ui| {
-            ui.strong("plugin");
-            ui.strong("stage");
-            ui.strong("calls");
-            ui.strong("ms");
-            ui.end_row();
-            for plugin in &d.plugins {
-                for stage in &plugin.stages {
-                    ui.label(&plugin.plugin);
-                    ui.label(&stage.stage);
-                    ui.label(stage.calls.to_string());
-                    ui.label(format!("{:.3}", stage.ms));
+        egui::Grid::new("diag-figures")
+            .striped(true)
+            .show(ui, |ui| {
+                let rows = [
+                    ("fixed steps", d.fixed_steps.to_string()),
+                    ("physics", format!("{:.3} ms", d.physics_ms)),
+                    ("contacts", d.contacts.to_string()),
+                    (
+                        "bodies awake / asleep",
+                        format!("{} / {}", d.awake_bodies, d.asleep_bodies),
+                    ),
+                    ("draw calls", d.draw_calls.to_string()),
+                    ("triangles", d.triangles.to_string()),
+                    ("instances", d.instances.to_string()),
+                    ("entities", d.entities.to_string()),
+                ];
+                for (name, value) in rows {
+                    ui.label(name);
+                    ui.label(value);
                     ui.end_row();
                 }
-            }
-        });
+            });
+        ui.separator();
+        egui::Grid::new("diag-plugins")
+            .striped(true)
+            .show(ui, |ui| {
+                ui.strong("plugin");
+                ui.strong("stage");
+                ui.strong("calls");
+                ui.strong("ms");
+                ui.end_row();
+                for plugin in &d.plugins {
+                    for stage in &plugin.stages {
+                        ui.label(&plugin.plugin);
+                        ui.label(&stage.stage);
+                        ui.label(stage.calls.to_string());
+                        ui.label(format!("{:.3}", stage.ms));
+                        ui.end_row();
+                    }
+                }
+            });
     }
 
     fn plot(&self, ui: &mut egui::Ui) {

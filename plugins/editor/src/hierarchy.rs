@@ -60,9 +60,8 @@ pub fn show(ui: &mut egui::Ui, ctx: &mut Ctx, state: &mut EditorState) {
                 };
                 if let Some((renamed, text)) = &mut state.hierarchy.renaming {
                     if *renamed == entity {
-                        let response = ui.add(
-                            egui::TextEdit::singleline(text).desired_width(f32::INFINITY),
-                        );
+                        let response =
+                            ui.add(egui::TextEdit::singleline(text).desired_width(f32::INFINITY));
                         if !response.has_focus() && !response.lost_focus() {
                             response.request_focus();
                         }

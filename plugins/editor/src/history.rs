@@ -68,7 +68,10 @@ impl History {
         if let (
             true,
             Some(Command::SetComponent {
-                entity, type_name, new, ..
+                entity,
+                type_name,
+                new,
+                ..
             }),
             Command::SetComponent {
                 entity: e2,

@@ -45,7 +45,10 @@ pub fn show(ui: &mut egui::Ui, ctx: &mut Ctx, state: &mut EditorState) {
         }
     };
     if state.selection.len() > 1 {
-        ui.weak(format!("{} selected; showing the last", state.selection.len()));
+        ui.weak(format!(
+            "{} selected; showing the last",
+            state.selection.len()
+        ));
     }
     name_field(ui, ctx, state, entity, &components);
     ui.weak(format!("entity {entity}"));
@@ -64,14 +67,21 @@ pub fn show(ui: &mut egui::Ui, ctx: &mut Ctx, state: &mut EditorState) {
                     .default_open(true)
                     .show(ui, |ui| {
                         new = component_ui(ui, ctx, entry, id);
-                        if ui.small_button(format!("Remove {}", entry.type_name)).clicked() {
+                        if ui
+                            .small_button(format!("Remove {}", entry.type_name))
+                            .clicked()
+                        {
                             remove = true;
                         }
                     });
                 if remove {
                     edits.push((entry.type_name.clone(), Some(entry.value.clone()), None));
                 } else if let Some(new) = new {
-                    edits.push((entry.type_name.clone(), Some(entry.value.clone()), Some(new)));
+                    edits.push((
+                        entry.type_name.clone(),
+                        Some(entry.value.clone()),
+                        Some(new),
+                    ));
                 }
             }
             ui.separator();
@@ -208,7 +218,11 @@ fn component_ui(
 }
 
 /// Decodes, edits and re-encodes a typed component; `Some(json)` when it changed.
-fn typed<T>(ui: &mut egui::Ui, json: &str, edit: impl FnOnce(&mut egui::Ui, &mut T)) -> Option<String>
+fn typed<T>(
+    ui: &mut egui::Ui,
+    json: &str,
+    edit: impl FnOnce(&mut egui::Ui, &mut T),
+) -> Option<String>
 where
     T: DeserializeOwned + Serialize + PartialEq + Clone,
 {
@@ -226,11 +240,45 @@ where
         .flatten()
 }
 
+/// A colour button that writes back only what the user changed: egui's picker goes through
+/// HSV, so writing every frame would drift the stored value by float rounding.
+fn color_rgb(ui: &mut egui::Ui, color: &mut [f32; 3]) {
+    let mut shown = *color;
+    if ui.color_edit_button_rgb(&mut shown).changed() {
+        *color = shown;
+    }
+}
+
+/// [`color_rgb`] with alpha.
+fn color_rgba(ui: &mut egui::Ui, color: &mut [f32; 4]) {
+    let mut shown = *color;
+    if ui.color_edit_button_rgba_unmultiplied(&mut shown).changed() {
+        *color = shown;
+    }
+}
+
+/// A drag value limited to `range` when edited. A value already outside it is shown as it
+/// is: merely showing a component must never change it.
+fn ranged(
+    value: &mut f32,
+    speed: f64,
+    range: std::ops::RangeInclusive<f64>,
+) -> egui::DragValue<'_> {
+    egui::DragValue::new(value)
+        .speed(speed)
+        .range(range)
+        .clamp_existing_to_range(false)
+}
+
 fn vec3_row(ui: &mut egui::Ui, label: &str, v: &mut [f32; 3], speed: f32) {
     ui.horizontal(|ui| {
         ui.label(label);
         for (axis, x) in ["X", "Y", "Z"].iter().zip(v.iter_mut()) {
-            ui.add(egui::DragValue::new(x).speed(speed).prefix(format!("{axis} ")));
+            ui.add(
+                egui::DragValue::new(x)
+                    .speed(speed)
+                    .prefix(format!("{axis} ")),
+            );
         }
     });
 }
@@ -239,7 +287,8 @@ fn transform_ui(ui: &mut egui::Ui, t: &mut Transform) {
     let mut translation = t.translation.to_array();
     vec3_row(ui, "Position", &mut translation, 0.05);
     let (y, x, z) = t.rotation.to_euler(EulerRot::YXZ);
-    let euler = [x.to_degrees(), y.to_degrees(), z.to_degrees()];
+    // `+ 0.0` shows -0.0 as 0.0.
+    let euler = [x, y, z].map(|a| a.to_degrees() + 0.0);
     let mut edited = euler;
     vec3_row(ui, "Rotation", &mut edited, 0.5);
     let mut scale = t.scale.to_array();
@@ -276,7 +325,7 @@ fn mesh_renderer_ui(ui: &mut egui::Ui, m: &mut MeshRenderer) {
     });
     ui.horizontal(|ui| {
         ui.label("Colour");
-        ui.color_edit_button_rgba_unmultiplied(&mut m.material.color);
+        color_rgba(ui, &mut m.material.color);
     });
     ui.horizontal(|ui| {
         ui.label("Shading");
@@ -302,16 +351,16 @@ fn light_ui(ui: &mut egui::Ui, light: &mut Light) {
     ui.label(kind);
     ui.horizontal(|ui| {
         ui.label("Colour");
-        ui.color_edit_button_rgb(color);
+        color_rgb(ui, color);
     });
     ui.horizontal(|ui| {
         ui.label("Intensity");
-        ui.add(egui::DragValue::new(intensity).speed(0.05).range(0.0..=1000.0));
+        ui.add(ranged(intensity, 0.05, 0.0..=1000.0));
     });
     if let Light::Point { range, .. } = light {
         ui.horizontal(|ui| {
             ui.label("Range");
-            ui.add(egui::DragValue::new(range).speed(0.1).range(0.0..=10_000.0));
+            ui.add(ranged(range, 0.1, 0.0..=10_000.0));
         });
     }
 }
@@ -336,15 +385,15 @@ fn camera_ui(ui: &mut egui::Ui, camera: &mut Camera) {
         Projection::Orthographic { height } => {
             ui.horizontal(|ui| {
                 ui.label("Height");
-                ui.add(egui::DragValue::new(height).speed(0.1).range(0.01..=10_000.0));
+                ui.add(ranged(height, 0.1, 0.01..=10_000.0));
             });
         }
     }
     ui.horizontal(|ui| {
         ui.label("Near");
-        ui.add(egui::DragValue::new(&mut camera.near).speed(0.01).range(0.001..=100.0));
+        ui.add(ranged(&mut camera.near, 0.01, 0.001..=100.0));
         ui.label("Far");
-        ui.add(egui::DragValue::new(&mut camera.far).speed(1.0).range(1.0..=100_000.0));
+        ui.add(ranged(&mut camera.far, 1.0, 1.0..=100_000.0));
     });
     ui.checkbox(&mut camera.active, "Active");
 }
@@ -361,8 +410,19 @@ fn rigid_body_ui(ui: &mut egui::Ui, body: &mut RigidBody) {
             });
     });
     ui.horizontal(|ui| {
-        ui.label("Mass");
-        ui.add(egui::DragValue::new(&mut body.mass).speed(0.05).range(0.001..=1.0e6));
+        // 0 kg means "from the colliders' densities".
+        let mut from_density = body.mass == 0.0;
+        if ui
+            .checkbox(&mut from_density, "Mass from density")
+            .changed()
+        {
+            body.mass = if from_density { 0.0 } else { 1.0 };
+        }
+        if !from_density {
+            ui.add(ranged(&mut body.mass, 0.05, 0.001..=1.0e6).suffix(" kg"));
+        }
+    });
+    ui.horizontal(|ui| {
         ui.label("Gravity scale");
         ui.add(egui::DragValue::new(&mut body.gravity_scale).speed(0.05));
     });
@@ -417,7 +477,7 @@ fn collider_ui(ui: &mut egui::Ui, collider: &mut Collider) {
         ColliderShape::Sphere { radius } => {
             ui.horizontal(|ui| {
                 ui.label("Radius");
-                ui.add(egui::DragValue::new(radius).speed(0.01).range(0.001..=1.0e4));
+                ui.add(ranged(radius, 0.01, 0.001..=1.0e4));
             });
         }
         ColliderShape::Box { half_extents } => vec3_row(ui, "Half extents", half_extents, 0.01),
@@ -427,21 +487,21 @@ fn collider_ui(ui: &mut egui::Ui, collider: &mut Collider) {
         } => {
             ui.horizontal(|ui| {
                 ui.label("Half height");
-                ui.add(egui::DragValue::new(half_height).speed(0.01).range(0.0..=1.0e4));
+                ui.add(ranged(half_height, 0.01, 0.0..=1.0e4));
                 ui.label("Radius");
-                ui.add(egui::DragValue::new(radius).speed(0.01).range(0.001..=1.0e4));
+                ui.add(ranged(radius, 0.01, 0.001..=1.0e4));
             });
         }
         _ => {}
     }
     ui.horizontal(|ui| {
         ui.label("Friction");
-        ui.add(egui::DragValue::new(&mut collider.friction).speed(0.01).range(0.0..=10.0));
+        ui.add(ranged(&mut collider.friction, 0.01, 0.0..=10.0));
         ui.label("Restitution");
-        ui.add(egui::DragValue::new(&mut collider.restitution).speed(0.01).range(0.0..=1.0));
+        ui.add(ranged(&mut collider.restitution, 0.01, 0.0..=1.0));
     });
     ui.horizontal(|ui| {
         ui.label("Density");
-        ui.add(egui::DragValue::new(&mut collider.density).speed(0.05).range(0.001..=1.0e5));
+        ui.add(ranged(&mut collider.density, 0.05, 0.001..=1.0e5));
     });
 }

@@ -23,9 +23,7 @@ pub mod viewport;
 use std::path::PathBuf;
 
 use egui_dock::{DockArea, DockState, TabViewer};
-use onyx_plugin_api::{
-    egui, export_plugin, AttachInfo, Ctx, Flow, PlayMode, Plugin, PluginError,
-};
+use onyx_plugin_api::{egui, export_plugin, AttachInfo, Ctx, Flow, PlayMode, Plugin, PluginError};
 use serde::{Deserialize, Serialize};
 
 use crate::file_dialog::{DialogResult, FilePurpose};
@@ -162,7 +160,8 @@ fn shortcuts(ui: &mut egui::Ui, ctx: &mut Ctx, state: &mut EditorState) {
         (
             command && !i.modifiers.shift && i.key_pressed(egui::Key::Z),
             command
-                && (i.key_pressed(egui::Key::Y) || (i.modifiers.shift && i.key_pressed(egui::Key::Z))),
+                && (i.key_pressed(egui::Key::Y)
+                    || (i.modifiers.shift && i.key_pressed(egui::Key::Z))),
             command && i.key_pressed(egui::Key::D),
             i.key_pressed(egui::Key::Delete),
             command && i.key_pressed(egui::Key::S),
@@ -203,6 +202,13 @@ impl TabViewer for Tabs<'_, '_> {
 
     fn id(&mut self, tab: &mut Panel) -> egui::Id {
         egui::Id::new(tab.title())
+    }
+
+    /// egui_dock paints tab titles itself: name each tab for AccessKit (screen readers, and
+    /// tests that find widgets by label).
+    fn on_tab_button(&mut self, tab: &mut Panel, response: &egui::Response) {
+        let title = tab.title();
+        response.widget_info(|| egui::WidgetInfo::labeled(egui::WidgetType::Button, true, title));
     }
 
     fn ui(&mut self, ui: &mut egui::Ui, tab: &mut Panel) {

@@ -43,9 +43,7 @@ fn file_menu(ui: &mut egui::Ui, ctx: &mut Ctx, state: &mut EditorState) {
     if ui.button("Save").clicked() {
         match ctx.scene_path() {
             Some(path) => save_scene(ctx, state, &path),
-            None => {
-                state.file_dialog = Some(FileDialog::new(FilePurpose::SaveAs, &scene_dir(ctx)))
-            }
+            None => state.file_dialog = Some(FileDialog::new(FilePurpose::SaveAs, &scene_dir(ctx))),
         }
     }
     if ui.button("Save As…").clicked() {
@@ -123,13 +121,19 @@ pub fn save_scene(ctx: &mut Ctx, state: &mut EditorState, path: &str) {
 fn edit_menu(ui: &mut egui::Ui, ctx: &mut Ctx, state: &mut EditorState) {
     let editing = ctx.play_mode() == PlayMode::Edit;
     if ui
-        .add_enabled(editing && state.history.can_undo(), egui::Button::new("Undo"))
+        .add_enabled(
+            editing && state.history.can_undo(),
+            egui::Button::new("Undo"),
+        )
         .clicked()
     {
         state.undo(ctx);
     }
     if ui
-        .add_enabled(editing && state.history.can_redo(), egui::Button::new("Redo"))
+        .add_enabled(
+            editing && state.history.can_redo(),
+            egui::Button::new("Redo"),
+        )
         .clicked()
     {
         state.redo(ctx);
@@ -182,11 +186,13 @@ fn view_menu(ui: &mut egui::Ui, dock: &mut DockState<Panel>) {
         let mut shown = dock.find_tab(&panel).is_some();
         if ui.checkbox(&mut shown, panel.title()).changed() {
             panel::toggle(dock, panel);
+            ui.close();
         }
     }
     ui.separator();
     if ui.button("Reset layout").clicked() {
         *dock = panel::default_layout();
+        ui.close();
     }
 }
 

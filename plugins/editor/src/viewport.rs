@@ -21,6 +21,14 @@ const FLY_SPEED: f32 = 6.0;
 const LOOK_SPEED: f32 = 0.005;
 /// Gizmo axis length on screen, as a share of the distance to the camera.
 const GIZMO_SCALE: f32 = 0.15;
+/// With Ctrl held, moves snap to multiples of this, metres.
+pub const SNAP_METRES: f32 = 0.5;
+/// With Ctrl held, turns snap to multiples of this, degrees.
+pub const SNAP_DEGREES: f32 = 15.0;
+/// With Ctrl held, scales snap to multiples of this.
+pub const SNAP_SCALE: f32 = 0.1;
+/// How near (points) to an axis handle a press must be to grab it.
+const GRAB_DISTANCE: f32 = 10.0;
 
 /// The editor camera's pose.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
@@ -71,6 +79,16 @@ pub enum GizmoMode {
     Scale,
 }
 
+/// Which axes the gizmo moves and turns along. Scaling is always along the object's own axes.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum GizmoSpace {
+    /// The world's X, Y, Z.
+    #[default]
+    World,
+    /// The selection's own (rotated) axes.
+    Local,
+}
+
 #[derive(Clone, Debug)]
 struct GizmoDrag {
     entity: Entity,
@@ -91,6 +109,8 @@ pub struct ViewportState {
     written: Option<Transform>,
     /// The gizmo shown.
     pub gizmo: GizmoMode,
+    /// World or local axes.
+    pub space: GizmoSpace,
     drag: Option<GizmoDrag>,
     /// Grid on.
     pub grid: bool,
@@ -108,6 +128,7 @@ impl Default for ViewportState {
             entity: None,
             written: None,
             gizmo: GizmoMode::default(),
+            space: GizmoSpace::default(),
             drag: None,
             grid: true,
             physics_debug: false,
@@ -219,6 +240,10 @@ fn toolbar(ui: &mut egui::Ui, view: &mut ViewportState) {
         ui.selectable_value(&mut view.gizmo, GizmoMode::Translate, "Move (W)");
         ui.selectable_value(&mut view.gizmo, GizmoMode::Rotate, "Rotate (E)");
         ui.selectable_value(&mut view.gizmo, GizmoMode::Scale, "Scale (R)");
+        ui.separator();
+        ui.selectable_value(&mut view.space, GizmoSpace::World, "World");
+        ui.selectable_value(&mut view.space, GizmoSpace::Local, "Local");
+        ui.weak("Ctrl snaps");
     });
 }
 
@@ -254,7 +279,11 @@ fn fly(ui: &mut egui::Ui, ctx: &mut Ctx, state: &mut EditorState, response: &egu
                 }
             }
         });
-        let fast = if ui.input(|i| i.modifiers.shift) { 3.0 } else { 1.0 };
+        let fast = if ui.input(|i| i.modifiers.shift) {
+            3.0
+        } else {
+            1.0
+        };
         let moved = rotation * step * FLY_SPEED * fast * dt;
         cam.position = (Vec3::from_array(cam.position) + moved).to_array();
     } else if hovered && !ui.ctx().egui_wants_keyboard_input() {
@@ -277,10 +306,7 @@ fn fly(ui: &mut egui::Ui, ctx: &mut Ctx, state: &mut EditorState, response: &egu
     }
     let focus = hovered && ui.input(|i| i.key_pressed(egui::Key::F));
     if focus {
-        if let Some(target) = state
-            .primary()
-            .and_then(|e| ctx.get::<Transform>(e).ok())
-        {
+        if let Some(target) = state.primary().and_then(|e| ctx.get::<Transform>(e).ok()) {
             let cam = &mut state.viewport.camera;
             let distance = 3.0 + target.scale.max_element() * 2.0;
             cam.position = (target.translation - cam.forward() * distance).to_array();
@@ -376,6 +402,9 @@ fn pick_mesh(ctx: &mut Ctx, skip: Option<Entity>, origin: Vec3, dir: Vec3) -> Op
     best.map(|(_, e)| e)
 }
 
+/// The gizmo handles' accessible names, by axis.
+pub const HANDLE_LABELS: [&str; 3] = ["Gizmo X", "Gizmo Y", "Gizmo Z"];
+
 const AXES: [(Vec3, egui::Color32); 3] = [
     (Vec3::X, egui::Color32::from_rgb(230, 70, 70)),
     (Vec3::Y, egui::Color32::from_rgb(80, 210, 80)),
@@ -409,13 +438,11 @@ fn gizmo(
     };
     let painter = ui.painter_at(rect);
     let mode = state.viewport.gizmo;
+    let local = mode == GizmoMode::Scale || state.viewport.space == GizmoSpace::Local;
+    let axis_direction = |axis: Vec3, rotation: Quat| if local { rotation * axis } else { axis };
     let mut ends = Vec::new();
     for (axis, (dir, color)) in AXES.iter().enumerate() {
-        let dir = if mode == GizmoMode::Translate {
-            *dir
-        } else {
-            transform.rotation * *dir
-        };
+        let dir = axis_direction(*dir, transform.rotation);
         let Some(end) = to_screen(view_proj, rect, origin + dir * world_length) else {
             continue;
         };
@@ -430,19 +457,35 @@ fn gizmo(
                 painter.circle_stroke(end, 6.0, stroke);
             }
             GizmoMode::Scale => {
-                painter.rect_filled(egui::Rect::from_center_size(end, egui::vec2(9.0, 9.0)), 0.0, *color);
+                painter.rect_filled(
+                    egui::Rect::from_center_size(end, egui::vec2(9.0, 9.0)),
+                    0.0,
+                    *color,
+                );
             }
         }
+        // Each handle is a named node for AccessKit (screen readers, and tests that grab
+        // the handle by name); it only senses hover, so the drag stays the viewport's.
+        let handle = ui.interact(
+            egui::Rect::from_center_size(end, egui::Vec2::splat(2.0 * GRAB_DISTANCE)),
+            response.id.with(("gizmo-handle", axis)),
+            egui::Sense::hover(),
+        );
+        handle.widget_info(|| {
+            egui::WidgetInfo::labeled(egui::WidgetType::Other, true, HANDLE_LABELS[axis])
+        });
         ends.push((axis, end));
     }
 
     let mut took = false;
     if response.drag_started_by(egui::PointerButton::Primary) {
-        if let Some(pointer) = response.interact_pointer_pos() {
+        // Where the button went down: the drag starts only after the pointer has travelled.
+        let pressed_at = ui.input(|i| i.pointer.press_origin());
+        if let Some(pointer) = pressed_at.or(response.interact_pointer_pos()) {
             let nearest = ends
                 .iter()
                 .map(|(axis, end)| (*axis, *end, distance_to_segment(pointer, center, *end)))
-                .filter(|(_, _, d)| *d < 10.0)
+                .filter(|(_, _, d)| *d < GRAB_DISTANCE)
                 .min_by(|a, b| a.2.total_cmp(&b.2));
             if let Some((axis, end, _)) = nearest {
                 let screen = end - center;
@@ -467,23 +510,13 @@ fn gizmo(
         }
         let delta = response.drag_delta();
         drag.moved += Vec2::new(delta.x, delta.y);
-        let len = drag.screen_axis.length().max(1.0);
-        let along = drag.moved.dot(drag.screen_axis / len) / len;
-        let mut t = drag.start;
-        let axis_dir = AXES[drag.axis].0;
-        match mode {
-            GizmoMode::Translate => t.translation += axis_dir * along * drag.world_length,
-            GizmoMode::Rotate => {
-                let across = drag.moved.perp_dot(drag.screen_axis / len) * 0.01;
-                t.rotation = (drag.start.rotation * Quat::from_axis_angle(axis_dir, across)).normalize();
-            }
-            GizmoMode::Scale => {
-                let factor = (1.0 + along).max(0.01);
-                let mut s = t.scale.to_array();
-                s[drag.axis] *= factor;
-                t.scale = Vec3::from_array(s);
-            }
-        }
+        let snap = ui.input(|i| i.modifiers.command || i.modifiers.ctrl);
+        let t = dragged(
+            drag,
+            mode,
+            axis_direction(AXES[drag.axis].0, drag.start.rotation),
+            snap,
+        );
         if t.is_finite() {
             let _ = ctx.set(entity, t);
         }
@@ -503,6 +536,42 @@ fn gizmo(
         }
     }
     took
+}
+
+/// The transform `drag` gives: along `axis` (world or local, as drawn) by the pointer's
+/// travel along the handle on screen, snapped when `snap`.
+fn dragged(drag: &GizmoDrag, mode: GizmoMode, axis: Vec3, snap: bool) -> Transform {
+    let len = drag.screen_axis.length().max(1.0);
+    let along = drag.moved.dot(drag.screen_axis / len) / len;
+    let snapped = |value: f32, step: f32| {
+        if snap {
+            (value / step).round() * step
+        } else {
+            value
+        }
+    };
+    let mut t = drag.start;
+    match mode {
+        GizmoMode::Translate => {
+            let distance = snapped(along * drag.world_length, SNAP_METRES);
+            t.translation += axis * distance;
+        }
+        GizmoMode::Rotate => {
+            // Dragging across the handle turns about it: 0.5° per point.
+            let degrees = snapped(
+                drag.moved.perp_dot(drag.screen_axis / len) * 0.5,
+                SNAP_DEGREES,
+            );
+            t.rotation = (Quat::from_axis_angle(axis, degrees.to_radians()) * drag.start.rotation)
+                .normalize();
+        }
+        GizmoMode::Scale => {
+            let mut s = t.scale.to_array();
+            s[drag.axis] = snapped(s[drag.axis] * (1.0 + along), SNAP_SCALE).max(0.01);
+            t.scale = Vec3::from_array(s);
+        }
+    }
+    t
 }
 
 fn distance_to_segment(p: egui::Pos2, a: egui::Pos2, b: egui::Pos2) -> f32 {

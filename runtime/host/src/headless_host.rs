@@ -224,6 +224,38 @@ impl HeadlessHost {
         }
     }
 
+    /// Drags with the left button from `from` to `to` (GUI points) as a person would: moves
+    /// there, presses, moves in `steps` equal moves (a frame each), releases.
+    pub fn drag(&mut self, from: egui::Pos2, to: egui::Pos2, steps: u32) {
+        self.pointer_move(from);
+        self.step(1);
+        self.host.push_event(InputEvent::MouseButton {
+            button: MouseButton::Left,
+            pressed: true,
+        });
+        self.step(1);
+        let steps = steps.max(1);
+        for i in 1..=steps {
+            self.pointer_move(from + (to - from) * (i as f32 / steps as f32));
+            self.step(1);
+        }
+        self.host.push_event(InputEvent::MouseButton {
+            button: MouseButton::Left,
+            pressed: false,
+        });
+        self.step(1);
+    }
+
+    /// Presses (`true`) or releases `key` and leaves it so: for a modifier held through a
+    /// click or a drag.
+    pub fn hold_key(&mut self, key: Key, down: bool) {
+        self.host.push_event(InputEvent::Key {
+            key,
+            pressed: down,
+            repeat: false,
+        });
+    }
+
     /// Clicks the centre of the widget labelled `label` (see [`HeadlessHost::find_widget`]).
     /// Returns `false`, clicking nothing, when no plugin shows such a widget.
     pub fn click_widget(&mut self, label: &str) -> bool {
@@ -256,7 +288,13 @@ impl HeadlessHost {
     /// a label's text, a window's title — in the topmost plugin UI that shows one, as of
     /// the last frame. Like `egui_kittest`, through the UI's AccessKit tree.
     pub fn find_widget(&self, label: &str) -> Option<egui::Rect> {
-        self.host.find_widget(label)
+        self.find_widgets(label).first().copied()
+    }
+
+    /// Every widget labelled `label` in the topmost plugin UI that shows any, in tree order —
+    /// for when a label is on the screen twice (a tab and the menu entry that hides it).
+    pub fn find_widgets(&self, label: &str) -> Vec<egui::Rect> {
+        self.host.find_widgets(label)
     }
 
     /// Whether the pointer is over a plugin's UI (so clicks go to the UI, not the scene).

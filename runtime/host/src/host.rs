@@ -328,11 +328,11 @@ impl Host {
         &mut self.gui
     }
 
-    /// The rectangle (points) of the widget labelled `label` in the topmost plugin UI that
-    /// shows one (needs `gui_mut().set_accesskit(true)` and a frame since).
-    pub fn find_widget(&self, label: &str) -> Option<egui::Rect> {
+    /// The rectangles (points) of the widgets labelled `label` in the topmost plugin UI that
+    /// shows any, in tree order (needs `gui_mut().set_accesskit(true)` and a frame since).
+    pub fn find_widgets(&self, label: &str) -> Vec<egui::Rect> {
         let order: Vec<&str> = self.plugins.iter().map(|p| p.name.as_str()).collect();
-        self.gui.find_widget(&order, label)
+        self.gui.find_widgets(&order, label)
     }
 
     fn dispatch_events(&mut self) {

@@ -5,7 +5,7 @@
 use std::path::{Path, PathBuf};
 use std::process::Command;
 
-use onyx_plugin_api::egui::{pos2, Pos2};
+use onyx_plugin_api::egui::{pos2, vec2, Pos2, Vec2};
 use onyx_plugin_api::{Key, MeshRenderer, Name, PlayMode, RigidBody, Transform};
 use onyx_runtime::{HeadlessHost, HostConfig};
 use onyx_tests::{assert_golden, onyx_binary, plugin_library, target_dir};
@@ -31,10 +31,19 @@ fn click(host: &mut HeadlessHost, label: &str) {
     host.step(1);
 }
 
-/// Opens menu `menu` and clicks its entry `entry`.
+/// Opens menu `menu` and clicks its entry `entry`: the widget labelled `entry` that
+/// appeared when the menu opened (a tab may carry the same label).
 fn menu(host: &mut HeadlessHost, menu: &str, entry: &str) {
+    let before = host.find_widgets(entry);
     click(host, menu);
-    click(host, entry);
+    let shown = host.find_widgets(entry);
+    let item = shown
+        .iter()
+        .find(|r| !before.contains(r))
+        .or(shown.first())
+        .unwrap_or_else(|| panic!("menu {menu} has no entry `{entry}`"));
+    host.click_at(item.center());
+    host.step(1);
 }
 
 /// Clicks into the text field right of the label `label` and types `text`, then Enter.
@@ -70,7 +79,13 @@ fn the_editor_enters_edit_mode_and_shows_its_panels() {
     let dir = tempfile::tempdir().unwrap();
     let host = editor_host(dir.path());
     assert_eq!(host.host().play_mode(), PlayMode::Edit);
-    for panel in ["Hierarchy", "Inspector", "Viewport", "Console", "Diagnostics"] {
+    for panel in [
+        "Hierarchy",
+        "Inspector",
+        "Viewport",
+        "Console",
+        "Diagnostics",
+    ] {
         assert!(host.find_widget(panel).is_some(), "panel {panel} shown");
     }
     for m in ["File", "Edit", "Create", "Plugins", "View", "Play"] {
@@ -98,19 +113,39 @@ fn renaming_in_the_inspector_undoes_and_redoes() {
     let mut host = editor_host(dir.path());
     create(&mut host, "Cube");
     type_into_field_after(&mut host, "Name", "2");
-    assert!(host.find::<Transform>("Cube2").is_some(), "{:?}", names(&host));
+    assert!(
+        host.find::<Transform>("Cube2").is_some(),
+        "{:?}",
+        names(&host)
+    );
 
     menu(&mut host, "Edit", "Undo");
-    assert!(host.find::<Transform>("Cube").is_some(), "{:?}", names(&host));
+    assert!(
+        host.find::<Transform>("Cube").is_some(),
+        "{:?}",
+        names(&host)
+    );
     menu(&mut host, "Edit", "Redo");
-    assert!(host.find::<Transform>("Cube2").is_some(), "{:?}", names(&host));
+    assert!(
+        host.find::<Transform>("Cube2").is_some(),
+        "{:?}",
+        names(&host)
+    );
 
     // Undo the rename and the creation: the cube is gone; redo brings it back.
     menu(&mut host, "Edit", "Undo");
     menu(&mut host, "Edit", "Undo");
-    assert!(host.find::<Transform>("Cube").is_none(), "{:?}", names(&host));
+    assert!(
+        host.find::<Transform>("Cube").is_none(),
+        "{:?}",
+        names(&host)
+    );
     menu(&mut host, "Edit", "Redo");
-    assert!(host.find::<Transform>("Cube").is_some(), "{:?}", names(&host));
+    assert!(
+        host.find::<Transform>("Cube").is_some(),
+        "{:?}",
+        names(&host)
+    );
 }
 
 #[test]
@@ -119,7 +154,11 @@ fn deleting_and_duplicating_are_undoable() {
     let mut host = editor_host(dir.path());
     create(&mut host, "Sphere");
     menu(&mut host, "Edit", "Duplicate");
-    assert!(host.find::<Transform>("Sphere copy").is_some(), "{:?}", names(&host));
+    assert!(
+        host.find::<Transform>("Sphere copy").is_some(),
+        "{:?}",
+        names(&host)
+    );
     menu(&mut host, "Edit", "Delete");
     assert!(host.find::<Transform>("Sphere copy").is_none());
     menu(&mut host, "Edit", "Undo");
@@ -181,7 +220,11 @@ fn play_lets_a_body_fall_and_stop_puts_it_back() {
     assert!(host.get::<RigidBody>(cube).is_some(), "the body was added");
 
     host.step(10);
-    assert_eq!(host.get::<Transform>(cube), Some(start), "nothing moves in Edit");
+    assert_eq!(
+        host.get::<Transform>(cube),
+        Some(start),
+        "nothing moves in Edit"
+    );
 
     click(&mut host, "Play");
     assert_eq!(host.host().play_mode(), PlayMode::Playing);
@@ -211,7 +254,108 @@ fn a_reloaded_editor_keeps_drawing_and_reacting() {
     assert!(host.find_widget("MeshRenderer").is_some());
     create(&mut host, "Sphere");
     assert!(host.find::<Transform>("Sphere").is_some());
-    assert_eq!(host.host().play_mode(), PlayMode::Edit, "a reload does not stop/start");
+    assert_eq!(
+        host.host().play_mode(),
+        PlayMode::Edit,
+        "a reload does not stop/start"
+    );
+}
+
+/// The editor's move snap with Ctrl held, metres (`editor::viewport::SNAP_METRES`).
+const SNAP_METRES: f32 = 0.5;
+
+/// A cube made from the menu, selected, its gizmo shown; and its transform.
+fn selected_cube(host: &mut HeadlessHost) -> (onyx_plugin_api::Entity, Transform) {
+    create(host, "Cube");
+    host.find::<Transform>("Cube").expect("a Cube entity")
+}
+
+/// Drags gizmo handle `handle` ("Gizmo X", …) by `by` points.
+fn drag_handle(host: &mut HeadlessHost, handle: &str, by: Vec2) {
+    let at = host
+        .find_widget(handle)
+        .unwrap_or_else(|| panic!("no {handle} handle shown"))
+        .center();
+    host.drag(at, at + by, 6);
+    host.step(1);
+}
+
+#[test]
+fn dragging_the_gizmo_moves_the_cube_along_one_axis_and_undo_puts_it_back() {
+    let dir = tempfile::tempdir().unwrap();
+    let mut host = editor_host(dir.path());
+    let (cube, start) = selected_cube(&mut host);
+
+    drag_handle(&mut host, "Gizmo X", vec2(60.0, 0.0));
+    let moved: Transform = host.get(cube).unwrap();
+    assert!(moved.translation.x > start.translation.x + 0.2, "{moved:?}");
+    assert_eq!(moved.translation.y, start.translation.y, "only along X");
+    assert_eq!(moved.translation.z, start.translation.z, "only along X");
+    assert_eq!((moved.rotation, moved.scale), (start.rotation, start.scale));
+
+    // One drag is one edit.
+    menu(&mut host, "Edit", "Undo");
+    assert_eq!(host.get::<Transform>(cube), Some(start));
+    menu(&mut host, "Edit", "Redo");
+    assert_eq!(host.get::<Transform>(cube), Some(moved));
+
+    // With Ctrl held the move snaps to whole steps.
+    host.hold_key(Key::ControlLeft, true);
+    drag_handle(&mut host, "Gizmo Y", vec2(0.0, -45.0));
+    host.hold_key(Key::ControlLeft, false);
+    let snapped: Transform = host.get(cube).unwrap();
+    let rise = snapped.translation.y - start.translation.y;
+    assert!(rise >= SNAP_METRES - 1e-4, "moved up: {snapped:?}");
+    let steps = rise / SNAP_METRES;
+    assert!(
+        (steps - steps.round()).abs() < 1e-3,
+        "{rise} m is whole snap steps"
+    );
+}
+
+#[test]
+fn r_and_e_switch_the_gizmo_to_scale_and_rotate() {
+    let dir = tempfile::tempdir().unwrap();
+    let mut host = editor_host(dir.path());
+    let (cube, start) = selected_cube(&mut host);
+    let x_handle = host.find_widget("Gizmo X").unwrap().center();
+
+    // Keys go to the viewport while the pointer is over it.
+    host.pointer_move(x_handle + vec2(0.0, 40.0));
+    host.step(1);
+    host.press_key(Key::R);
+    host.step(2);
+    drag_handle(&mut host, "Gizmo X", vec2(40.0, 0.0));
+    let scaled: Transform = host.get(cube).unwrap();
+    assert!(scaled.scale.x > 1.2, "{scaled:?}");
+    assert_eq!((scaled.scale.y, scaled.scale.z), (1.0, 1.0));
+    assert_eq!(scaled.translation, start.translation);
+
+    host.press_key(Key::E);
+    host.step(2);
+    drag_handle(&mut host, "Gizmo Y", vec2(40.0, 0.0));
+    let turned: Transform = host.get(cube).unwrap();
+    let (axis, angle) = turned.rotation.to_axis_angle();
+    assert!(angle > 0.1, "it turned: {turned:?}");
+    assert!(axis.y.abs() > 0.999, "about Y only: {axis:?}");
+    assert_eq!(turned.translation, start.translation);
+}
+
+#[test]
+fn showing_an_entity_in_the_inspector_changes_nothing() {
+    let dir = tempfile::tempdir().unwrap();
+    let mut host = editor_host(dir.path());
+    host.load_scene(&repo_file("assets/scenes/editor_tour.ron"))
+        .expect("the tour scene loads");
+    host.step(2);
+    let before = world_summary(&host);
+    for name in ["Ball", "Sun", "Lamp", "Floor", "Pillar"] {
+        click(&mut host, name);
+        host.step(2);
+    }
+    let after = world_summary(&host);
+    let changed: Vec<_> = after.iter().filter(|row| !before.contains(row)).collect();
+    assert!(changed.is_empty(), "changed by being shown: {changed:#?}");
 }
 
 #[test]
@@ -243,7 +387,10 @@ fn a_corrupt_layout_file_gives_the_default_layout() {
     }
     drop(host);
     let text = std::fs::read_to_string(&layout).unwrap();
-    assert!(serde_json::from_str::<Value>(&text).is_ok(), "replaced by a good layout");
+    assert!(
+        serde_json::from_str::<Value>(&text).is_ok(),
+        "replaced by a good layout"
+    );
 }
 
 #[test]
@@ -264,18 +411,26 @@ fn clicking_an_object_in_the_viewport_selects_it() {
     );
     host.click_at(centre);
     host.step(1);
-    assert!(host.find_widget("MeshRenderer").is_some(), "the cube is inspected");
+    assert!(
+        host.find_widget("MeshRenderer").is_some(),
+        "the cube is inspected"
+    );
     let _ = cube;
+}
+
+/// The repository's copy of `path`.
+fn repo_file(path: &str) -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("..").join(path)
 }
 
 #[test]
 fn the_editor_matches_its_golden_image() {
     let dir = tempfile::tempdir().unwrap();
     let mut host = editor_host(dir.path());
-    create(&mut host, "Cube");
-    create(&mut host, "Light");
-    menu(&mut host, "Create", "Sphere");
-    host.step(1);
+    host.load_scene(&repo_file("assets/scenes/editor_tour.ron"))
+        .expect("the tour scene loads");
+    host.step(2);
+    click(&mut host, "Ball");
     // Log lines hold paths and timings: filter them all out.
     type_into_field_after(&mut host, "Search", "no line says this");
     host.pointer_move(Pos2::new(1.0, 700.0));
@@ -295,7 +450,13 @@ fn a_windowed_editor_run_saves_a_screenshot() {
     let out = Command::new(xvfb_run)
         .args(["-a", "-s", "-screen 0 1280x720x24"])
         .arg(onyx_binary())
-        .args(["run", "--plugin", "editor", "--scene", "assets/scenes/demo.ron"])
+        .args([
+            "run",
+            "--plugin",
+            "editor",
+            "--scene",
+            "assets/scenes/demo.ron",
+        ])
         .args(["--frames", "20", "--size", "640x360", "--screenshot"])
         .arg(&png)
         .arg("--set")
@@ -312,5 +473,8 @@ fn a_windowed_editor_run_saves_a_screenshot() {
     assert_eq!(image.dimensions(), (640, 360));
     let first = image.get_pixel(0, 0);
     assert!(image.pixels().any(|p| p != first), "not a blank image");
-    assert!(layout.is_file(), "the layout was saved when the editor detached");
+    assert!(
+        layout.is_file(),
+        "the layout was saved when the editor detached"
+    );
 }

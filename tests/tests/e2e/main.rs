@@ -4,6 +4,7 @@
 mod cli;
 mod ctx_api;
 mod dev_loop;
+mod editor;
 mod faults;
 mod gui;
 mod host_services;

@@ -85,7 +85,10 @@ impl GuiInputBuilder {
         }
     }
 
+    /// Keeps the held modifiers and tells egui when they change (its `i.modifiers`: Ctrl held
+    /// through a drag, Ctrl+Z).
     fn track_modifier(&mut self, key: Key, pressed: bool) {
+        let before = self.modifiers;
         match key {
             Key::ShiftLeft | Key::ShiftRight => self.modifiers.shift = pressed,
             Key::ControlLeft | Key::ControlRight => {
@@ -94,6 +97,9 @@ impl GuiInputBuilder {
             }
             Key::AltLeft | Key::AltRight => self.modifiers.alt = pressed,
             _ => {}
+        }
+        if self.modifiers != before {
+            self.events.push(Event::ModifiersChanged(self.modifiers));
         }
     }
 

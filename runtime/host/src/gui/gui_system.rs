@@ -247,14 +247,21 @@ impl GuiSystem {
         }
     }
 
-    /// The screen rectangle (points) of the widget labelled `label` in the topmost plugin
-    /// UI that has one. Needs [`GuiSystem::set_accesskit`] on and a frame drawn since.
-    pub fn find_widget(&self, plugin_order: &[&str], label: &str) -> Option<Rect> {
-        plugin_order.iter().rev().find_map(|name| {
-            let output = self.plugins.get(*name)?.output.as_ref()?;
-            let tree = output.platform.accesskit_update.as_ref()?;
-            widget_query::find_widget(tree, label)
-        })
+    /// The screen rectangles (points) of the widgets labelled `label` in the topmost plugin
+    /// UI that has any, in tree order. Needs [`GuiSystem::set_accesskit`] on and a frame
+    /// drawn since.
+    pub fn find_widgets(&self, plugin_order: &[&str], label: &str) -> Vec<Rect> {
+        plugin_order
+            .iter()
+            .rev()
+            .filter_map(|name| {
+                let output = self.plugins.get(*name)?.output.as_ref()?;
+                let tree = output.platform.accesskit_update.as_ref()?;
+                let found = widget_query::find_widgets(tree, label);
+                (!found.is_empty()).then_some(found)
+            })
+            .next()
+            .unwrap_or_default()
     }
 }
 
