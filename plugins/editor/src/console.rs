@@ -96,13 +96,37 @@ impl ConsoleState {
                     let line = &self.lines[i];
                     ui.label(
                         egui::RichText::new(format!(
-                            "{:5} {}: {}",
-                            line.level, line.source, line.message
+                            "{} {:5} {}: {}",
+                            clock(line.unix_ms),
+                            line.level,
+                            line.source,
+                            line.message
                         ))
                         .monospace()
                         .color(level_color(&line.level)),
                     );
                 }
             });
+    }
+}
+
+/// `unix_ms` as `HH:MM:SS.mmm`, UTC (as the terminal log's timestamps).
+fn clock(unix_ms: u64) -> String {
+    let ms = unix_ms % 86_400_000;
+    format!(
+        "{:02}:{:02}:{:02}.{:03}",
+        ms / 3_600_000,
+        ms / 60_000 % 60,
+        ms / 1000 % 60,
+        ms % 1000
+    )
+}
+
+#[cfg(test)]
+mod tests {
+    #[test]
+    fn clock_reads_the_time_of_day_in_utc() {
+        // 2026-11-22 11:40:05.042 UTC
+        assert_eq!(super::clock(1_795_347_605_042), "11:40:05.042");
     }
 }

@@ -1,7 +1,9 @@
 //! The Create menu's entities: their components as JSON.
 
 use onyx_plugin_api::glam::Vec3;
-use onyx_plugin_api::{Camera, Collider, Light, Material, MeshId, MeshRenderer, Transform};
+use onyx_plugin_api::{Camera, Collider, Ctx, Light, Material, MeshId, MeshRenderer, Transform};
+
+use crate::state::EditorState;
 
 /// What the Create menu makes.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -82,6 +84,26 @@ impl Primitive {
         }
         out
     }
+}
+
+/// Loads the OBJ model at `path` and creates an entity showing it, named after the file, in
+/// front of the camera (undoable). A file that cannot be read shows the renderer's fallback
+/// and its error in the console.
+pub fn import_obj(ctx: &mut Ctx, state: &mut EditorState, path: &str) {
+    let mesh = match ctx.load_mesh(path) {
+        Ok(mesh) => mesh,
+        Err(e) => return state.report(ctx, &format!("cannot import {path}"), e),
+    };
+    let name = std::path::Path::new(path)
+        .file_stem()
+        .map(|s| s.to_string_lossy().into_owned())
+        .unwrap_or_else(|| "Model".to_owned());
+    let at = state.viewport.spawn_point();
+    let components = vec![
+        json("Transform", &Transform::from_translation(at)),
+        json("MeshRenderer", &MeshRenderer::new(mesh)),
+    ];
+    state.create(ctx, &name, components);
 }
 
 fn json(type_name: &str, value: &impl serde::Serialize) -> (String, String) {

@@ -11,6 +11,39 @@ pub enum FilePurpose {
     Open,
     /// Save the scene as.
     SaveAs,
+    /// Import a model as a new entity.
+    ImportObj,
+    /// Load a plugin library.
+    LoadPlugin,
+}
+
+impl FilePurpose {
+    fn title(self) -> &'static str {
+        match self {
+            FilePurpose::Open => "Open scene",
+            FilePurpose::SaveAs => "Save scene as",
+            FilePurpose::ImportObj => "Import OBJ model",
+            FilePurpose::LoadPlugin => "Load plugin",
+        }
+    }
+
+    fn verb(self) -> &'static str {
+        match self {
+            FilePurpose::Open => "Open",
+            FilePurpose::SaveAs => "Save",
+            FilePurpose::ImportObj => "Import",
+            FilePurpose::LoadPlugin => "Load",
+        }
+    }
+
+    /// The files listed (folders always are).
+    fn extension(self) -> &'static str {
+        match self {
+            FilePurpose::Open | FilePurpose::SaveAs => "ron",
+            FilePurpose::ImportObj => "obj",
+            FilePurpose::LoadPlugin => std::env::consts::DLL_EXTENSION,
+        }
+    }
 }
 
 /// An open file dialog.
@@ -68,6 +101,12 @@ impl FileDialog {
         if let Ok(read) = std::fs::read_dir(&self.dir) {
             for entry in read.flatten() {
                 let is_dir = entry.file_type().is_ok_and(|t| t.is_dir());
+                let wanted = Path::new(&entry.file_name())
+                    .extension()
+                    .is_some_and(|e| e.eq_ignore_ascii_case(self.purpose.extension()));
+                if !is_dir && !wanted {
+                    continue;
+                }
                 self.entries
                     .push((entry.file_name().to_string_lossy().into_owned(), is_dir));
             }
@@ -79,11 +118,7 @@ impl FileDialog {
     /// Shows the dialog.
     pub fn show(&mut self, ctx: &egui::Context) -> DialogResult {
         let mut result = DialogResult::Open;
-        let title = match self.purpose {
-            FilePurpose::Open => "Open scene",
-            FilePurpose::SaveAs => "Save scene as",
-        };
-        egui::Window::new(title)
+        egui::Window::new(self.purpose.title())
             .collapsible(false)
             .default_size([420.0, 320.0])
             .show(ctx, |ui| {
@@ -123,12 +158,11 @@ impl FileDialog {
                     ui.text_edit_singleline(&mut self.name);
                 });
                 ui.horizontal(|ui| {
-                    let verb = match self.purpose {
-                        FilePurpose::Open => "Open",
-                        FilePurpose::SaveAs => "Save",
-                    };
                     if ui
-                        .add_enabled(!self.name.trim().is_empty(), egui::Button::new(verb))
+                        .add_enabled(
+                            !self.name.trim().is_empty(),
+                            egui::Button::new(self.purpose.verb()),
+                        )
                         .clicked()
                     {
                         result = DialogResult::Chosen(self.path());

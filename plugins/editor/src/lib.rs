@@ -110,6 +110,8 @@ impl Plugin for Editor {
                     match purpose {
                         FilePurpose::Open => menu::open_scene(ctx, state, &path),
                         FilePurpose::SaveAs => menu::save_scene(ctx, state, &path),
+                        FilePurpose::ImportObj => create::import_obj(ctx, state, &path),
+                        FilePurpose::LoadPlugin => ctx.load_plugin(&path),
                     }
                 }
             }

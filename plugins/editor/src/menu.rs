@@ -20,7 +20,7 @@ pub fn menu_bar(
         ui.menu_button("File", |ui| file_menu(ui, ctx, state));
         ui.menu_button("Edit", |ui| edit_menu(ui, ctx, state));
         ui.menu_button("Create", |ui| create_menu(ui, ctx, state));
-        ui.menu_button("Plugins", |ui| plugins_menu(ui, ctx));
+        ui.menu_button("Plugins", |ui| plugins_menu(ui, ctx, state));
         ui.menu_button("View", |ui| view_menu(ui, dock));
         ui.separator();
         play_toolbar(ui, ctx);
@@ -158,9 +158,15 @@ fn create_menu(ui: &mut egui::Ui, ctx: &mut Ctx, state: &mut EditorState) {
             state.create(ctx, primitive.label(), primitive.components(at));
         }
     }
+    ui.separator();
+    if ui.button("Import OBJ…").clicked() {
+        let models = std::path::PathBuf::from("assets/models");
+        let start = if models.is_dir() { models } else { ".".into() };
+        state.file_dialog = Some(FileDialog::new(FilePurpose::ImportObj, &start));
+    }
 }
 
-fn plugins_menu(ui: &mut egui::Ui, ctx: &mut Ctx) {
+fn plugins_menu(ui: &mut egui::Ui, ctx: &mut Ctx, state: &mut EditorState) {
     for info in ctx.plugins() {
         let status = match &info.state {
             PluginState::Running => "running".to_owned(),
@@ -178,6 +184,14 @@ fn plugins_menu(ui: &mut egui::Ui, ctx: &mut Ctx) {
     ui.separator();
     if ui.button("Reload all").clicked() {
         ctx.reload_all_plugins();
+    }
+    if ui.button("Load…").clicked() {
+        // Plugin libraries usually sit beside the host's executable.
+        let start = std::env::current_exe()
+            .ok()
+            .and_then(|exe| exe.parent().map(std::path::Path::to_path_buf))
+            .unwrap_or_else(|| ".".into());
+        state.file_dialog = Some(FileDialog::new(FilePurpose::LoadPlugin, &start));
     }
 }
 

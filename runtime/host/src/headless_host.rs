@@ -297,6 +297,14 @@ impl HeadlessHost {
         self.host.find_widgets(label)
     }
 
+    /// The first widget whose label (or text) contains `text`: a log line, a status message.
+    pub fn find_widget_containing(&self, text: &str) -> Option<egui::Rect> {
+        self.host
+            .find_widgets_where(|label| label.contains(text))
+            .first()
+            .copied()
+    }
+
     /// Whether the pointer is over a plugin's UI (so clicks go to the UI, not the scene).
     pub fn pointer_over_gui(&self) -> bool {
         self.host.gui().pointer_over_gui()

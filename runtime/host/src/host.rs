@@ -304,8 +304,9 @@ impl Host {
             self.gui.skip_frame();
             return;
         }
-        let time = self.state.clock.time();
-        let input = self.gui.begin_frame(time.total, time.delta);
+        // GUIs live in real time: a paused or slowed scene's tools still respond.
+        let (total, delta) = self.state.clock.real_time();
+        let input = self.gui.begin_frame(total, delta);
         for slot in &mut self.plugins {
             if slot.status.is_faulted() || !self.gui.wants_call(&slot.name) {
                 continue;
@@ -331,8 +332,13 @@ impl Host {
     /// The rectangles (points) of the widgets labelled `label` in the topmost plugin UI that
     /// shows any, in tree order (needs `gui_mut().set_accesskit(true)` and a frame since).
     pub fn find_widgets(&self, label: &str) -> Vec<egui::Rect> {
+        self.find_widgets_where(|text| text == label)
+    }
+
+    /// [`Host::find_widgets`] for the widgets whose label (or value) passes `test`.
+    pub fn find_widgets_where(&self, test: impl Fn(&str) -> bool) -> Vec<egui::Rect> {
         let order: Vec<&str> = self.plugins.iter().map(|p| p.name.as_str()).collect();
-        self.gui.find_widgets(&order, label)
+        self.gui.find_widgets_where(&order, test)
     }
 
     fn dispatch_events(&mut self) {

@@ -385,6 +385,12 @@ fn a_corrupt_layout_file_gives_the_default_layout() {
     for panel in ["Hierarchy", "Inspector", "Viewport", "Console"] {
         assert!(host.find_widget(panel).is_some(), "panel {panel} shown");
     }
+    // The console says why.
+    assert!(
+        host.find_widget_containing("ignored, using the default layout")
+            .is_some(),
+        "the warning is in the console"
+    );
     drop(host);
     let text = std::fs::read_to_string(&layout).unwrap();
     assert!(
@@ -476,5 +482,140 @@ fn a_windowed_editor_run_saves_a_screenshot() {
     assert!(
         layout.is_file(),
         "the layout was saved when the editor detached"
+    );
+}
+
+#[test]
+fn the_console_shows_host_and_plugin_lines_and_filters_them_by_level_and_text() {
+    let dir = tempfile::tempdir().unwrap();
+    let layout = dir.path().join("layout.json");
+    std::fs::write(&layout, "{ not a layout").unwrap();
+    let mut host = editor_host(dir.path());
+    let warning = "ignored, using the default layout";
+    let line = host
+        .find_widget_containing(warning)
+        .expect("the editor's warning");
+    // Time, level, source.
+    let text_of_line = |host: &HeadlessHost| host.find_widget_containing(warning).is_some();
+    assert!(line.width() > 0.0 && text_of_line(&host));
+    assert!(
+        host.find_widget_containing("WARN  editor: editor layout")
+            .is_some(),
+        "level and source are shown"
+    );
+
+    // Only errors: the warning goes.
+    click(&mut host, "TRACE");
+    let error_entry = *host.find_widgets("ERROR").last().expect("level list open");
+    host.click_at(error_entry.center());
+    host.step(2);
+    assert!(!text_of_line(&host), "hidden below ERROR");
+
+    // Back to every level, then a text filter that matches nothing.
+    click(&mut host, "ERROR");
+    let trace_entry = *host.find_widgets("TRACE").last().expect("level list open");
+    host.click_at(trace_entry.center());
+    host.step(2);
+    assert!(text_of_line(&host), "shown again");
+    type_into_field_after(&mut host, "Search", "no line says this");
+    assert!(!text_of_line(&host), "filtered out by text");
+}
+
+#[test]
+fn the_diagnostics_panel_shows_frame_physics_render_and_per_plugin_figures() {
+    let dir = tempfile::tempdir().unwrap();
+    let mut host = editor_host(dir.path());
+    click(&mut host, "Diagnostics");
+    host.step(3);
+    for row in [
+        "fixed steps",
+        "physics",
+        "contacts",
+        "bodies awake / asleep",
+        "draw calls",
+        "triangles",
+    ] {
+        assert!(host.find_widget(row).is_some(), "row {row}");
+    }
+    assert!(
+        host.find_widget_containing(" fps").is_some(),
+        "frame time and fps"
+    );
+    // The editor's own time, per lifecycle stage.
+    assert!(host.find_widget("draw_gui").is_some(), "per-stage rows");
+}
+
+#[test]
+fn import_obj_makes_an_entity_showing_the_model() {
+    let dir = tempfile::tempdir().unwrap();
+    let mut host = editor_host(dir.path());
+    let model = repo_file("assets/models/two_materials.obj");
+    menu(&mut host, "Create", "Import OBJ…");
+    type_into_field_after(&mut host, "File name", &model.display().to_string());
+    click(&mut host, "Import");
+    host.step(2);
+    let (entity, _) = host
+        .find::<Transform>("two_materials")
+        .expect("an entity named after the file");
+    let mesh: MeshRenderer = host.get(entity).expect("it shows a mesh");
+    assert!(
+        onyx_plugin_api::MeshId::BUILTIN
+            .iter()
+            .all(|(id, _)| *id != mesh.mesh),
+        "the imported model, not a built-in shape"
+    );
+    // Undoable like any creation.
+    menu(&mut host, "Edit", "Undo");
+    assert!(host.find::<Transform>("two_materials").is_none());
+}
+
+#[test]
+fn plugins_menu_loads_a_library_and_lists_it_running() {
+    let dir = tempfile::tempdir().unwrap();
+    let mut host = editor_host(dir.path());
+    let library = plugin_library("fixture-gui");
+    menu(&mut host, "Plugins", "Load…");
+    type_into_field_after(&mut host, "File name", &library.display().to_string());
+    click(&mut host, "Load");
+    host.step(3);
+    assert!(
+        host.host().plugin("fixture_gui").is_some(),
+        "the library was loaded"
+    );
+    click(&mut host, "Plugins");
+    assert!(
+        host.find_widget_containing("fixture_gui (running)")
+            .is_some(),
+        "listed with its status"
+    );
+}
+
+#[test]
+fn ctrl_click_in_the_hierarchy_selects_several_and_delete_removes_them() {
+    let dir = tempfile::tempdir().unwrap();
+    let mut host = editor_host(dir.path());
+    create(&mut host, "Cube");
+    create(&mut host, "Sphere");
+    create(&mut host, "Capsule");
+
+    click(&mut host, "Cube");
+    host.hold_key(Key::ControlLeft, true);
+    click(&mut host, "Capsule");
+    host.hold_key(Key::ControlLeft, false);
+    host.step(1);
+    menu(&mut host, "Edit", "Delete");
+    assert!(
+        host.find::<Transform>("Cube").is_none(),
+        "{:?}",
+        names(&host)
+    );
+    assert!(
+        host.find::<Transform>("Capsule").is_none(),
+        "{:?}",
+        names(&host)
+    );
+    assert!(
+        host.find::<Transform>("Sphere").is_some(),
+        "not selected, kept"
     );
 }

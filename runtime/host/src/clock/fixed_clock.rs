@@ -17,6 +17,8 @@ pub struct FixedClock {
     accumulator: f64,
     total: f64,
     delta: f64,
+    real_total: f64,
+    real_delta: f64,
     ticks: u64,
     frame: u64,
     steps_this_frame: u32,
@@ -48,6 +50,8 @@ impl FixedClock {
             accumulator: 0.0,
             total: 0.0,
             delta: 0.0,
+            real_total: 0.0,
+            real_delta: 0.0,
             ticks: 0,
             frame: 0,
             steps_this_frame: 0,
@@ -64,6 +68,8 @@ impl FixedClock {
         } else {
             0.0
         };
+        self.real_delta = real_dt;
+        self.real_total += real_dt;
         let max = self.settings.max_steps_per_frame;
         let steps = if self.paused {
             self.delta = 0.0;
@@ -91,6 +97,12 @@ impl FixedClock {
         self.total += self.delta;
         self.steps_this_frame = steps;
         steps
+    }
+
+    /// Real time since the clock started and this frame's real time, seconds: neither
+    /// scaled nor paused (a paused scene's editor still animates, flies and double-clicks).
+    pub fn real_time(&self) -> (f64, f32) {
+        (self.real_total, self.real_delta as f32)
     }
 
     /// Marks one fixed step as done.
@@ -271,6 +283,23 @@ mod tests {
         assert!(!c.set_time_scale(-1.0));
         assert!(c.set_time_scale(0.0));
         assert_eq!(run(&mut c, 1.0 / 60.0, 3), vec![0; 3]);
+    }
+
+    #[test]
+    fn real_time_runs_on_while_paused_or_scaled() {
+        let mut c = clock(60.0, 8);
+        c.set_paused(true);
+        run(&mut c, 0.1, 3);
+        assert!(c.set_time_scale(0.5));
+        c.set_paused(false);
+        run(&mut c, 0.1, 2);
+        let (total, delta) = c.real_time();
+        assert!((total - 0.5).abs() < 1e-9, "{total}");
+        assert!((delta - 0.1).abs() < 1e-6);
+        assert!(
+            (c.time().total - 0.1).abs() < 1e-9,
+            "scaled time only while running"
+        );
     }
 
     #[test]

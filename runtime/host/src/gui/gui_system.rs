@@ -251,13 +251,22 @@ impl GuiSystem {
     /// UI that has any, in tree order. Needs [`GuiSystem::set_accesskit`] on and a frame
     /// drawn since.
     pub fn find_widgets(&self, plugin_order: &[&str], label: &str) -> Vec<Rect> {
+        self.find_widgets_where(plugin_order, |text| text == label)
+    }
+
+    /// [`GuiSystem::find_widgets`] for the widgets whose label (or value) passes `test`.
+    pub fn find_widgets_where(
+        &self,
+        plugin_order: &[&str],
+        test: impl Fn(&str) -> bool,
+    ) -> Vec<Rect> {
         plugin_order
             .iter()
             .rev()
             .filter_map(|name| {
                 let output = self.plugins.get(*name)?.output.as_ref()?;
                 let tree = output.platform.accesskit_update.as_ref()?;
-                let found = widget_query::find_widgets(tree, label);
+                let found = widget_query::find_widgets_where(tree, &test);
                 (!found.is_empty()).then_some(found)
             })
             .next()

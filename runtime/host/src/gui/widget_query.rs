@@ -5,11 +5,11 @@ use egui::accesskit::TreeUpdate;
 use egui::{Pos2, Rect};
 
 /// The screen rectangles (points) of every widget in `tree` whose label (or, for plain
-/// text, whose value) is exactly `label`, in tree order. Disabled widgets are found too.
-pub fn find_widgets(tree: &TreeUpdate, label: &str) -> Vec<Rect> {
+/// text, whose value) passes `test`, in tree order. Disabled widgets are found too.
+pub fn find_widgets_where(tree: &TreeUpdate, test: impl Fn(&str) -> bool) -> Vec<Rect> {
     tree.nodes
         .iter()
-        .filter(|(_, node)| node.label() == Some(label) || node.value() == Some(label))
+        .filter(|(_, node)| node.label().is_some_and(&test) || node.value().is_some_and(&test))
         .filter_map(|(_, node)| {
             let bounds = node.bounds()?;
             Some(Rect::from_min_max(
