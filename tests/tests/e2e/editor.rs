@@ -619,3 +619,35 @@ fn ctrl_click_in_the_hierarchy_selects_several_and_delete_removes_them() {
         "not selected, kept"
     );
 }
+
+#[test]
+fn double_clicking_a_hierarchy_row_renames_in_place_and_undo_restores_the_name() {
+    let dir = tempfile::tempdir().unwrap();
+    let mut host = editor_host(dir.path());
+    create(&mut host, "Cube");
+    create(&mut host, "Sphere");
+    let row = host
+        .find_widgets("Sphere")
+        .first()
+        .copied()
+        .expect("its row");
+    host.click_at(row.center());
+    host.click_at(row.center());
+    host.step(1);
+    // The field opens with the old name selected: typing replaces it.
+    host.type_text("Ball");
+    host.step(1);
+    host.press_key(Key::Enter);
+    host.step(2);
+    assert!(
+        host.find::<Transform>("Ball").is_some(),
+        "{:?}",
+        names(&host)
+    );
+    menu(&mut host, "Edit", "Undo");
+    assert!(
+        host.find::<Transform>("Sphere").is_some(),
+        "{:?}",
+        names(&host)
+    );
+}
