@@ -13,7 +13,12 @@ use serde_json::Value;
 
 /// A host running the editor, its layout kept in `dir`.
 fn editor_host(dir: &Path) -> HeadlessHost {
-    let config = HostConfig::default().setting(
+    editor_host_with(dir, HostConfig::default())
+}
+
+/// [`editor_host`] with more settings in `config`.
+fn editor_host_with(dir: &Path, config: HostConfig) -> HeadlessHost {
+    let config = config.setting(
         "editor",
         "layout",
         dir.join("layout.json").display().to_string(),
@@ -650,4 +655,48 @@ fn double_clicking_a_hierarchy_row_renames_in_place_and_undo_restores_the_name()
         "{:?}",
         names(&host)
     );
+}
+
+#[test]
+fn a_script_picked_in_the_inspector_runs_in_play_and_stop_undoes_its_work() {
+    let dir = tempfile::tempdir().unwrap();
+    // With a plugin that registers the "Rotator" behaviour.
+    let config =
+        HostConfig::default().setting("fixture_services", "dir", dir.path().display().to_string());
+    let mut host = editor_host_with(dir.path(), config);
+    host.load_plugin_file(&plugin_library("fixture-services"))
+        .expect("services fixture loads");
+    host.step(2);
+    let (cube, start) = selected_cube(&mut host);
+    // A new Script names the first registered behaviour; the dropdown lists them all.
+    menu(&mut host, "Add Component", "onyx.Script");
+    click(&mut host, "Rotator");
+    let listed = host.find_widgets("Rotator");
+    assert_eq!(listed.len(), 2, "the dropdown and its one entry");
+    host.click_at(listed[1].center());
+    host.step(2);
+    let dump = host.dump_state();
+    let cube_dump = dump["entities"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .find(|e| e["name"] == "Cube")
+        .expect("the cube in the dump");
+    assert_eq!(cube_dump["components"]["onyx.Script"]["name"], "Rotator");
+    assert_eq!(
+        host.get::<Transform>(cube),
+        Some(start),
+        "scripts wait for Play"
+    );
+
+    click(&mut host, "Play");
+    host.step(30);
+    let turned: Transform = host.get(cube).unwrap();
+    assert!(
+        turned.rotation.angle_between(start.rotation) > 0.05,
+        "{turned:?}"
+    );
+    click(&mut host, "Stop");
+    host.step(1);
+    assert_eq!(host.get::<Transform>(cube), Some(start));
 }
