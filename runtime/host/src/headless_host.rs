@@ -246,6 +246,21 @@ impl HeadlessHost {
         self.step(1);
     }
 
+    /// Presses (`true`) or releases mouse `button` and leaves it so: for a button held while
+    /// keys are pressed (the editor's fly camera: right button + WASD).
+    pub fn hold_button(&mut self, button: MouseButton, down: bool) {
+        self.host.push_event(InputEvent::MouseButton {
+            button,
+            pressed: down,
+        });
+    }
+
+    /// Scrolls the wheel by `lines` (positive: away from the user).
+    pub fn scroll(&mut self, lines: f32) {
+        self.host
+            .push_event(InputEvent::Scroll { dx: 0.0, dy: lines });
+    }
+
     /// Presses (`true`) or releases `key` and leaves it so: for a modifier held through a
     /// click or a drag.
     pub fn hold_key(&mut self, key: Key, down: bool) {

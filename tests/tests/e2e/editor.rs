@@ -6,7 +6,7 @@ use std::path::{Path, PathBuf};
 use std::process::Command;
 
 use onyx_plugin_api::egui::{pos2, vec2, Pos2, Vec2};
-use onyx_plugin_api::{Key, MeshRenderer, Name, PlayMode, RigidBody, Transform};
+use onyx_plugin_api::{Key, MeshRenderer, MouseButton, Name, PlayMode, RigidBody, Transform};
 use onyx_runtime::{HeadlessHost, HostConfig};
 use onyx_tests::{assert_golden, onyx_binary, plugin_library, target_dir};
 use serde_json::Value;
@@ -699,4 +699,58 @@ fn a_script_picked_in_the_inspector_runs_in_play_and_stop_undoes_its_work() {
     click(&mut host, "Stop");
     host.step(1);
     assert_eq!(host.get::<Transform>(cube), Some(start));
+}
+
+/// The editor camera's pose.
+fn editor_camera(host: &HeadlessHost) -> Transform {
+    host.find::<Transform>("Editor Camera")
+        .expect("the editor's camera entity")
+        .1
+}
+
+#[test]
+fn the_viewport_camera_flies_zooms_and_frames_the_selection() {
+    let dir = tempfile::tempdir().unwrap();
+    let mut host = editor_host(dir.path());
+    let (_, cube) = selected_cube(&mut host);
+    let over_viewport = host.find_widget("Gizmo X").unwrap().center() + vec2(0.0, 80.0);
+    host.pointer_move(over_viewport);
+    host.step(2);
+    let start = editor_camera(&host);
+    let forward = start.rotation * onyx_plugin_api::glam::Vec3::NEG_Z;
+
+    // The wheel moves along the view direction.
+    host.scroll(2.0);
+    host.step(3);
+    let zoomed = editor_camera(&host);
+    let moved = zoomed.translation - start.translation;
+    assert!(moved.dot(forward) > 0.1, "moved forward: {moved:?}");
+    assert!(
+        moved.cross(forward).length() < 1e-3,
+        "only forward: {moved:?}"
+    );
+
+    // Right button + W flies forward for as long as they are held.
+    host.hold_button(MouseButton::Right, true);
+    host.hold_key(Key::W, true);
+    host.step(30);
+    host.hold_key(Key::W, false);
+    host.hold_button(MouseButton::Right, false);
+    host.step(2);
+    let flown = editor_camera(&host);
+    let travelled = (flown.translation - zoomed.translation).dot(forward);
+    assert!(travelled > 1.0, "flew {travelled} m forward");
+
+    // F frames the selection: the cube ahead, at a few metres.
+    host.press_key(Key::F);
+    host.step(3);
+    let framed = editor_camera(&host);
+    let to_cube = cube.translation - framed.translation;
+    let view = framed.rotation * onyx_plugin_api::glam::Vec3::NEG_Z;
+    assert!(to_cube.normalize().dot(view) > 0.99, "looking at the cube");
+    assert!(
+        (2.0..10.0).contains(&to_cube.length()),
+        "{} m away",
+        to_cube.length()
+    );
 }
