@@ -8,6 +8,9 @@ unset WAYLAND_DISPLAY
 # Each crate is built once per run: incremental caches would only cost disk (gigabytes,
 # on machines that may have little) and time.
 export CARGO_INCREMENTAL=0
+# Line tables only for the workspace's own crates (dependencies have none, see Cargo.toml):
+# backtraces and panic locations keep file:line, the target directory shrinks by gigabytes.
+export CARGO_PROFILE_DEV_DEBUG=line-tables-only
 # Disk and temp space at the end, pass or fail: plugin loads copy libraries into the temp
 # folder and the scaffold test builds a second crate, so a full disk shows up as failures.
 trap 'df -h . "${TMPDIR:-/tmp}" >&2' EXIT
