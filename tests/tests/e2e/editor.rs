@@ -596,6 +596,25 @@ fn plugins_menu_loads_a_library_and_lists_it_running() {
 }
 
 #[test]
+fn the_plugins_menu_shows_a_faulted_plugin_with_its_error() {
+    let dir = tempfile::tempdir().unwrap();
+    let config = HostConfig::default().setting("fixture_faulty", "panic_in", "on_update");
+    let mut host = editor_host_with(dir.path(), config);
+    host.load_plugin_file(&plugin_library("fixture-faulty"))
+        .expect("loads");
+    host.step(3);
+    click(&mut host, "Plugins");
+    assert!(
+        host.find_widget_containing("fixture_faulty (faulted in on_update: ")
+            .is_some(),
+        "the fault is listed with its stage and message"
+    );
+    // The editor itself keeps running.
+    create(&mut host, "Cube");
+    assert!(host.find::<Transform>("Cube").is_some());
+}
+
+#[test]
 fn ctrl_click_in_the_hierarchy_selects_several_and_delete_removes_them() {
     let dir = tempfile::tempdir().unwrap();
     let mut host = editor_host(dir.path());
