@@ -63,6 +63,13 @@ fn type_into_field_after(host: &mut HeadlessHost, label: &str, text: &str) {
     host.step(2);
 }
 
+/// Opens `menu` ▸ `entry` (a file dialog), types `path` as the file name and clicks `verb`.
+fn choose_file(host: &mut HeadlessHost, menu_name: &str, entry: &str, path: &Path, verb: &str) {
+    menu(host, menu_name, entry);
+    type_into_field_after(host, "File name", &path.display().to_string());
+    click(host, verb);
+}
+
 fn names(host: &HeadlessHost) -> Vec<String> {
     let mut names: Vec<String> = host
         .world()
@@ -72,6 +79,17 @@ fn names(host: &HeadlessHost) -> Vec<String> {
         .collect();
     names.sort();
     names
+}
+
+/// Asserts that an entity named `name` exists (or not), listing every name when wrong.
+fn assert_entity(host: &HeadlessHost, name: &str, exists: bool) {
+    assert_eq!(
+        host.find::<Transform>(name).is_some(),
+        exists,
+        "entity `{name}` should {}exist; the world has {:?}",
+        if exists { "" } else { "not " },
+        names(host)
+    );
 }
 
 fn create(host: &mut HeadlessHost, what: &str) {
@@ -118,39 +136,19 @@ fn renaming_in_the_inspector_undoes_and_redoes() {
     let mut host = editor_host(dir.path());
     create(&mut host, "Cube");
     type_into_field_after(&mut host, "Name", "2");
-    assert!(
-        host.find::<Transform>("Cube2").is_some(),
-        "{:?}",
-        names(&host)
-    );
+    assert_entity(&host, "Cube2", true);
 
     menu(&mut host, "Edit", "Undo");
-    assert!(
-        host.find::<Transform>("Cube").is_some(),
-        "{:?}",
-        names(&host)
-    );
+    assert_entity(&host, "Cube", true);
     menu(&mut host, "Edit", "Redo");
-    assert!(
-        host.find::<Transform>("Cube2").is_some(),
-        "{:?}",
-        names(&host)
-    );
+    assert_entity(&host, "Cube2", true);
 
     // Undo the rename and the creation: the cube is gone; redo brings it back.
     menu(&mut host, "Edit", "Undo");
     menu(&mut host, "Edit", "Undo");
-    assert!(
-        host.find::<Transform>("Cube").is_none(),
-        "{:?}",
-        names(&host)
-    );
+    assert_entity(&host, "Cube", false);
     menu(&mut host, "Edit", "Redo");
-    assert!(
-        host.find::<Transform>("Cube").is_some(),
-        "{:?}",
-        names(&host)
-    );
+    assert_entity(&host, "Cube", true);
 }
 
 #[test]
@@ -159,15 +157,11 @@ fn deleting_and_duplicating_are_undoable() {
     let mut host = editor_host(dir.path());
     create(&mut host, "Sphere");
     menu(&mut host, "Edit", "Duplicate");
-    assert!(
-        host.find::<Transform>("Sphere copy").is_some(),
-        "{:?}",
-        names(&host)
-    );
+    assert_entity(&host, "Sphere copy", true);
     menu(&mut host, "Edit", "Delete");
-    assert!(host.find::<Transform>("Sphere copy").is_none());
+    assert_entity(&host, "Sphere copy", false);
     menu(&mut host, "Edit", "Undo");
-    assert!(host.find::<Transform>("Sphere copy").is_some());
+    assert_entity(&host, "Sphere copy", true);
 }
 
 /// Every entity's name and components, without handles, sorted.
@@ -199,18 +193,14 @@ fn save_new_and_open_give_back_the_same_world() {
     assert!(before.len() >= 3, "{before:?}");
 
     let scene = dir.path().join("saved.ron");
-    menu(&mut host, "File", "Save As…");
-    type_into_field_after(&mut host, "File name", &scene.display().to_string());
-    click(&mut host, "Save");
+    choose_file(&mut host, "File", "Save As…", &scene, "Save");
     assert!(scene.is_file(), "the scene was written");
 
     menu(&mut host, "File", "New");
     host.step(2);
-    assert!(host.find::<Transform>("Cube").is_none());
+    assert_entity(&host, "Cube", false);
 
-    menu(&mut host, "File", "Open…");
-    type_into_field_after(&mut host, "File name", &scene.display().to_string());
-    click(&mut host, "Open");
+    choose_file(&mut host, "File", "Open…", &scene, "Open");
     host.step(2);
     assert_eq!(world_summary(&host), before);
 }
@@ -258,7 +248,7 @@ fn a_reloaded_editor_keeps_drawing_and_reacting() {
     // The selection survived: the inspector still shows the cube.
     assert!(host.find_widget("MeshRenderer").is_some());
     create(&mut host, "Sphere");
-    assert!(host.find::<Transform>("Sphere").is_some());
+    assert_entity(&host, "Sphere", true);
     assert_eq!(
         host.host().play_mode(),
         PlayMode::Edit,
@@ -555,9 +545,7 @@ fn import_obj_makes_an_entity_showing_the_model() {
     let dir = tempfile::tempdir().unwrap();
     let mut host = editor_host(dir.path());
     let model = repo_file("assets/models/two_materials.obj");
-    menu(&mut host, "Create", "Import OBJ…");
-    type_into_field_after(&mut host, "File name", &model.display().to_string());
-    click(&mut host, "Import");
+    choose_file(&mut host, "Create", "Import OBJ…", &model, "Import");
     host.step(2);
     let (entity, _) = host
         .find::<Transform>("two_materials")
@@ -571,7 +559,7 @@ fn import_obj_makes_an_entity_showing_the_model() {
     );
     // Undoable like any creation.
     menu(&mut host, "Edit", "Undo");
-    assert!(host.find::<Transform>("two_materials").is_none());
+    assert_entity(&host, "two_materials", false);
 }
 
 #[test]
@@ -579,9 +567,7 @@ fn plugins_menu_loads_a_library_and_lists_it_running() {
     let dir = tempfile::tempdir().unwrap();
     let mut host = editor_host(dir.path());
     let library = plugin_library("fixture-gui");
-    menu(&mut host, "Plugins", "Load…");
-    type_into_field_after(&mut host, "File name", &library.display().to_string());
-    click(&mut host, "Load");
+    choose_file(&mut host, "Plugins", "Load…", &library, "Load");
     host.step(3);
     assert!(
         host.host().plugin("fixture_gui").is_some(),
@@ -611,7 +597,7 @@ fn the_plugins_menu_shows_a_faulted_plugin_with_its_error() {
     );
     // The editor itself keeps running.
     create(&mut host, "Cube");
-    assert!(host.find::<Transform>("Cube").is_some());
+    assert_entity(&host, "Cube", true);
 }
 
 #[test]
@@ -628,20 +614,9 @@ fn ctrl_click_in_the_hierarchy_selects_several_and_delete_removes_them() {
     host.hold_key(Key::ControlLeft, false);
     host.step(1);
     menu(&mut host, "Edit", "Delete");
-    assert!(
-        host.find::<Transform>("Cube").is_none(),
-        "{:?}",
-        names(&host)
-    );
-    assert!(
-        host.find::<Transform>("Capsule").is_none(),
-        "{:?}",
-        names(&host)
-    );
-    assert!(
-        host.find::<Transform>("Sphere").is_some(),
-        "not selected, kept"
-    );
+    assert_entity(&host, "Cube", false);
+    assert_entity(&host, "Capsule", false);
+    assert_entity(&host, "Sphere", true);
 }
 
 #[test]
@@ -663,17 +638,9 @@ fn double_clicking_a_hierarchy_row_renames_in_place_and_undo_restores_the_name()
     host.step(1);
     host.press_key(Key::Enter);
     host.step(2);
-    assert!(
-        host.find::<Transform>("Ball").is_some(),
-        "{:?}",
-        names(&host)
-    );
+    assert_entity(&host, "Ball", true);
     menu(&mut host, "Edit", "Undo");
-    assert!(
-        host.find::<Transform>("Sphere").is_some(),
-        "{:?}",
-        names(&host)
-    );
+    assert_entity(&host, "Sphere", true);
 }
 
 #[test]
