@@ -46,6 +46,23 @@ pub fn onyx_binary() -> PathBuf {
     path
 }
 
+/// `onyx` in a real window: the binary run under `xvfb-run` on a 1280×720 screen, finding
+/// plugins in this build's target directory, with no Wayland display to prefer. Add `run …`.
+pub fn onyx_in_xvfb() -> std::process::Command {
+    let xvfb_run = std::path::Path::new("/usr/bin/xvfb-run");
+    assert!(
+        xvfb_run.exists(),
+        "xvfb-run is missing: install the packages listed in the README (the test command does)"
+    );
+    let mut command = std::process::Command::new(xvfb_run);
+    command
+        .args(["-a", "-s", "-screen 0 1280x720x24"])
+        .arg(onyx_binary())
+        .env("ONYX_PLUGIN_PATH", target_dir())
+        .env_remove("WAYLAND_DISPLAY");
+    command
+}
+
 /// A shared, ordered log of what recording plugins saw.
 pub type Journal = Arc<Mutex<Vec<String>>>;
 

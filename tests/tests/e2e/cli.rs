@@ -4,7 +4,7 @@
 use std::path::Path;
 use std::process::{Command, Output};
 
-use onyx_tests::{onyx_binary, target_dir};
+use onyx_tests::{onyx_binary, onyx_in_xvfb, target_dir};
 
 fn onyx(args: &[&str]) -> Output {
     Command::new(onyx_binary())
@@ -213,16 +213,9 @@ fn plugins_lists_the_search_path_and_what_it_finds() {
 /// plugins, and it closes cleanly when the run ends.
 #[test]
 fn a_window_opens_runs_frames_and_closes_cleanly_under_xvfb() {
-    let xvfb_run = Path::new("/usr/bin/xvfb-run");
-    assert!(
-        xvfb_run.exists(),
-        "xvfb-run is missing: install the packages listed in the README (the test command does)"
-    );
     let dir = tempfile::tempdir().unwrap();
     let dump_path = dir.path().join("state.json");
-    let out = Command::new(xvfb_run)
-        .args(["-a", "-s", "-screen 0 1280x720x24"])
-        .arg(onyx_binary())
+    let out = onyx_in_xvfb()
         .args([
             "run",
             "--plugin",
@@ -235,8 +228,6 @@ fn a_window_opens_runs_frames_and_closes_cleanly_under_xvfb() {
             "--dump-state",
         ])
         .arg(&dump_path)
-        .env("ONYX_PLUGIN_PATH", target_dir())
-        .env_remove("WAYLAND_DISPLAY")
         .env("RUST_LOG", "info")
         .output()
         .expect("xvfb-run runs");
@@ -280,9 +271,7 @@ fn showcase_screenshot(windowed: bool, path: &Path) -> Output {
         path.display().to_string(),
     ];
     let mut command = if windowed {
-        let mut c = Command::new("/usr/bin/xvfb-run");
-        c.args(["-a", "-s", "-screen 0 1280x720x24"]).arg(onyx);
-        c
+        onyx_in_xvfb()
     } else {
         args.insert(1, "--headless".into());
         Command::new(onyx)

@@ -3,12 +3,11 @@
 //! a golden image, and a windowed run under Xvfb.
 
 use std::path::{Path, PathBuf};
-use std::process::Command;
 
 use onyx_plugin_api::egui::{pos2, vec2, Pos2, Vec2};
 use onyx_plugin_api::{Key, MeshRenderer, MouseButton, Name, PlayMode, RigidBody, Transform};
 use onyx_runtime::{HeadlessHost, HostConfig};
-use onyx_tests::{assert_golden, onyx_binary, plugin_library, target_dir};
+use onyx_tests::{assert_golden, onyx_in_xvfb, plugin_library};
 use serde_json::Value;
 
 /// A host running the editor, its layout kept in `dir`.
@@ -442,15 +441,11 @@ fn the_editor_matches_its_golden_image() {
 
 #[test]
 fn a_windowed_editor_run_saves_a_screenshot() {
-    let xvfb_run = Path::new("/usr/bin/xvfb-run");
-    assert!(xvfb_run.exists(), "xvfb-run is missing");
     let dir = tempfile::tempdir().unwrap();
     let png = dir.path().join("editor.png");
     let layout: PathBuf = dir.path().join("layout.json");
     let repo = Path::new(env!("CARGO_MANIFEST_DIR")).join("..");
-    let out = Command::new(xvfb_run)
-        .args(["-a", "-s", "-screen 0 1280x720x24"])
-        .arg(onyx_binary())
+    let out = onyx_in_xvfb()
         .args([
             "run",
             "--plugin",
@@ -463,8 +458,6 @@ fn a_windowed_editor_run_saves_a_screenshot() {
         .arg("--set")
         .arg(format!("editor.layout={}", layout.display()))
         .current_dir(repo)
-        .env("ONYX_PLUGIN_PATH", target_dir())
-        .env_remove("WAYLAND_DISPLAY")
         .env("RUST_LOG", "warn")
         .output()
         .expect("onyx runs");

@@ -271,9 +271,7 @@ fn a_plugin_showing_the_viewport_gets_the_scene_in_it_and_its_pointer_input() {
 fn a_windowed_run_draws_the_plugin_gui_under_xvfb() {
     let dir = tempfile::tempdir().unwrap();
     let png = dir.path().join("gui-window.png");
-    let out = std::process::Command::new("/usr/bin/xvfb-run")
-        .args(["-a", "-s", "-screen 0 1280x720x24"])
-        .arg(onyx_tests::onyx_binary())
+    let out = onyx_tests::onyx_in_xvfb()
         .args([
             "run",
             "--plugin",
@@ -286,8 +284,6 @@ fn a_windowed_run_draws_the_plugin_gui_under_xvfb() {
             "--screenshot",
         ])
         .arg(&png)
-        .env("ONYX_PLUGIN_PATH", onyx_tests::target_dir())
-        .env_remove("WAYLAND_DISPLAY")
         .env("RUST_LOG", "warn")
         .output()
         .expect("xvfb-run runs");
