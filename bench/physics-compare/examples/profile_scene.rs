@@ -38,6 +38,12 @@ fn main() -> anyhow::Result<()> {
         seconds += t.elapsed().as_secs_f64();
         steps_run += steps;
         println!("figure {}", trial.figure(e.as_ref()));
+        for (stage, sum) in e.stage_seconds() {
+            println!(
+                "  {stage:<12} {:.4} ms/step",
+                sum * 1e3 / steps.max(1) as f64
+            );
+        }
     }
     println!(
         "{name} {}: {:.4} ms/step (mean over {steps_run} steps)",

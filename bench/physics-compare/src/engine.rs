@@ -209,6 +209,11 @@ pub trait Engine {
     fn narrowphase_failures(&self) -> Option<u64> {
         None
     }
+    /// Time per stage summed over the steps so far, `(stage, seconds)`, where the engine
+    /// reports it (for profiling; the sweep measures whole steps).
+    fn stage_seconds(&self) -> Vec<(&'static str, f64)> {
+        Vec::new()
+    }
     /// Whether there are no bodies.
     fn is_empty(&self) -> bool {
         self.len() == 0
@@ -220,6 +225,8 @@ pub struct OnyxEngine {
     world: onyx_physics::PhysicsWorld,
     bodies: Vec<onyx_physics::BodyHandle>,
     failures: u64,
+    /// Broadphase, narrowphase, solve, integrate, ccd, sleep: seconds summed over steps.
+    stages: [f64; 6],
 }
 
 impl OnyxEngine {
@@ -236,6 +243,7 @@ impl OnyxEngine {
             world: onyx_physics::PhysicsWorld::new(settings),
             bodies: Vec::new(),
             failures: 0,
+            stages: [0.0; 6],
         }
     }
 
@@ -283,6 +291,17 @@ impl Engine for OnyxEngine {
     fn step(&mut self) {
         let c = self.world.step().counters;
         self.failures += u64::from(c.gjk_not_converged) + u64::from(c.epa_failures);
+        let stages = [
+            c.broadphase,
+            c.narrowphase,
+            c.solve,
+            c.integrate,
+            c.ccd,
+            c.sleep,
+        ];
+        for (sum, d) in self.stages.iter_mut().zip(stages) {
+            *sum += d.as_secs_f64();
+        }
     }
 
     fn position(&self, id: BodyId) -> Vec3 {
@@ -319,6 +338,18 @@ impl Engine for OnyxEngine {
 
     fn narrowphase_failures(&self) -> Option<u64> {
         Some(self.failures)
+    }
+
+    fn stage_seconds(&self) -> Vec<(&'static str, f64)> {
+        let names = [
+            "broadphase",
+            "narrowphase",
+            "solve",
+            "integrate",
+            "ccd",
+            "sleep",
+        ];
+        names.into_iter().zip(self.stages).collect()
     }
 }
 

@@ -44,6 +44,8 @@ pub struct PhysicsWorld {
     pub(crate) solver_handles: Vec<u32>,
     pub(crate) constraints: Vec<ContactConstraint>,
     pub(crate) constraint_points: Vec<crate::solver::contact_constraint::ConstraintPoint>,
+    /// The constraints as SIMD batches for the substeps.
+    pub(crate) contact_batches: crate::solver::coloring::ContactBatches,
     pub(crate) new_pairs: Vec<(u32, u32)>,
     /// Arena indices of the bodies that take part in this step (awake, not static, not
     /// quarantined), gathered by the pre-step and by wake-ups; sleeping bodies are not in it.
@@ -83,6 +85,7 @@ impl PhysicsWorld {
             solver_handles: Vec::new(),
             constraints: Vec::new(),
             constraint_points: Vec::new(),
+            contact_batches: Default::default(),
             new_pairs: Vec::new(),
             deepest_contact: Vec::new(),
             active_bodies: Vec::new(),

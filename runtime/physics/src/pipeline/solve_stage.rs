@@ -137,6 +137,7 @@ impl PhysicsWorld {
                 let mut c = ContactConstraint {
                     body_a: ia,
                     body_b: ib,
+                    writes: u8::from(a_dyn) | u8::from(b_dyn) << 1,
                     normal: n.into(),
                     tangent: [t1.into(), t2.into()],
                     restitution: pair.restitution,
@@ -201,13 +202,19 @@ impl PhysicsWorld {
             max_linear_speed: s.max_linear_speed,
             max_angular_speed: s.max_angular_speed,
         };
+        self.contact_batches.build(
+            &self.constraints,
+            &self.constraint_points,
+            &self.solver_states,
+        );
         solve_substeps(
             &mut self.solver_bodies,
             &mut self.solver_states,
-            &mut self.constraints,
-            &mut self.constraint_points,
+            &mut self.contact_batches,
             &params,
         );
+        self.contact_batches
+            .unpack(&mut self.constraints, &mut self.constraint_points);
 
         // Store impulses for warm starting and events; a manifold's friction is shared among
         // its points in proportion to their normal impulses.

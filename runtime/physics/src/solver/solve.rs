@@ -4,9 +4,8 @@
 use glam::{Quat, Vec3, Vec3A};
 
 use super::body_state::BodyState;
-use super::contact_constraint::{
-    apply_restitution, solve, warm_start, ConstraintPoint, ContactConstraint,
-};
+use super::coloring::ContactBatches;
+use super::contact_batch::Pass;
 use super::solver_body::SolverBody;
 
 /// Parameters of one solver run (derived from `PhysicsSettings`).
@@ -22,40 +21,43 @@ pub(crate) struct SolveParams {
     pub max_angular_speed: f32,
 }
 
-/// Runs all substeps over awake bodies and their constraints.
+/// Runs all substeps over awake bodies and their contact batches.
 pub(crate) fn solve_substeps(
     bodies: &mut [SolverBody],
     states: &mut [BodyState],
-    constraints: &mut [ContactConstraint],
-    points: &mut [ConstraintPoint],
+    batches: &mut ContactBatches,
     p: &SolveParams,
 ) {
-    let range = |c: &ContactConstraint| c.first as usize..c.first as usize + c.count as usize;
     let substeps = p.substeps.max(1);
     let h = p.dt / substeps as f32;
-    let inv_h = 1.0 / h;
+    let solve_pass = Pass {
+        inv_h: 1.0 / h,
+        use_bias: true,
+        max_push: p.max_push,
+    };
+    let relax_pass = Pass {
+        use_bias: false,
+        ..solve_pass
+    };
+    let ContactBatches { four, one, .. } = batches;
     for _ in 0..substeps {
         integrate_velocities(bodies, states, h, p);
-        for c in constraints.iter() {
-            warm_start(c, &points[range(c)], states);
-        }
+        four.iter().for_each(|b| b.warm_start(states));
+        one.iter().for_each(|b| b.warm_start(states));
         for _ in 0..p.iterations.max(1) {
-            for c in constraints.iter_mut() {
-                let r = range(c);
-                solve(c, &mut points[r.clone()], states, inv_h, true, p.max_push);
-            }
+            four.iter_mut().for_each(|b| b.solve(states, solve_pass));
+            one.iter_mut().for_each(|b| b.solve(states, solve_pass));
         }
         integrate_positions(bodies, states, h);
         for _ in 0..p.relax_iterations {
-            for c in constraints.iter_mut() {
-                let r = range(c);
-                solve(c, &mut points[r.clone()], states, inv_h, false, p.max_push);
-            }
+            four.iter_mut().for_each(|b| b.solve(states, relax_pass));
+            one.iter_mut().for_each(|b| b.solve(states, relax_pass));
         }
     }
-    for c in constraints.iter() {
-        apply_restitution(c, &mut points[range(c)], states, p.restitution_threshold);
-    }
+    four.iter_mut()
+        .for_each(|b| b.apply_restitution(states, p.restitution_threshold));
+    one.iter_mut()
+        .for_each(|b| b.apply_restitution(states, p.restitution_threshold));
 }
 
 fn integrate_velocities(bodies: &[SolverBody], states: &mut [BodyState], h: f32, p: &SolveParams) {

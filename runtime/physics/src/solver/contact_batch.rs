@@ -1,0 +1,457 @@
+//! [`ContactBatch`]: four manifolds solved at once, one per SIMD lane (warm start, the
+//! normal and friction rows of [`ContactConstraint`], restitution).
+//!
+//! The rows are those of the scalar formulation documented on [`ContactConstraint`],
+//! [`NormalBlock`](super::contact_constraint::NormalBlock) and
+//! [`FrictionPart`](super::contact_constraint::FrictionPart); here every branch is a lane
+//! select. The lanes of one batch never share a body they write ([`super::coloring`]), so
+//! solving them together gives each manifold exactly what solving it alone would.
+//! `N` is the point count the batch is laid out for: 1 (spheres, capsule ends) or 4 (faces;
+//! manifolds of 2 or 3 points leave the rest inactive). An empty lane has zero masses and
+//! changes nothing.
+
+use glam::Vec3A;
+
+use super::body_state::BodyState;
+use super::contact_constraint::{ConstraintPoint, ContactConstraint, PAIR_SLOT};
+use super::lanes::{
+    gather_deltas, gather_velocities, scatter_velocities, Velocities, F, LANES, V3,
+};
+
+/// Lanes of one contact point slot.
+#[derive(Clone, Copy, Debug, Default)]
+struct PointLanes {
+    base_separation: F,
+    normal_impulse: F,
+    max_normal_impulse: F,
+    normal_mass: F,
+    inv_normal_mass: F,
+    relative_velocity: F,
+    twist_lever: F,
+    /// 1 where the lane's manifold has this point, else 0.
+    active: F,
+    rn_a: V3,
+    rn_b: V3,
+    irn_a: V3,
+    irn_b: V3,
+}
+
+/// Four manifolds of at most `N` points as lanes.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct ContactBatch<const N: usize> {
+    /// Index into the step's constraints per lane; `u32::MAX` for an empty lane.
+    pub constraint: [u32; LANES],
+    body_a: [u32; LANES],
+    body_b: [u32; LANES],
+    /// Bit `l`: lane `l` writes body A (resp. B) back.
+    writes_a: u8,
+    writes_b: u8,
+    inv_mass_a: V3,
+    inv_mass_b: V3,
+    normal: V3,
+    tangent: [V3; 2],
+    bias_rate: F,
+    mass_scale: F,
+    impulse_scale: F,
+    /// `impulse_scale / mass_scale`: a soft row's compliance per unit `inv_normal_mass`.
+    soft_compliance: F,
+    restitution: F,
+    points: [PointLanes; N],
+    /// Lane mask: the shared normal step applies.
+    patch: F,
+    patch_k: F,
+    row_sum: [F; N],
+    coupling: [F; 6],
+    count: F,
+    inv_count: F,
+    friction: F,
+    tangent_impulse: [F; 2],
+    twist_impulse: F,
+    tangent_mass: [F; 3],
+    slide_mass: F,
+    twist_mass: F,
+    rt_a: [V3; 2],
+    rt_b: [V3; 2],
+    irt_a: [V3; 2],
+    irt_b: [V3; 2],
+    in_a: V3,
+    in_b: V3,
+}
+
+/// Lane `l` gets `f(slots[l])`, 0 for an empty slot.
+#[inline(always)]
+fn lanes<T: Copy>(slots: &[Option<T>; LANES], f: impl Fn(T) -> f32) -> F {
+    F::new(std::array::from_fn(|l| slots[l].map_or(0.0, &f)))
+}
+
+/// Lane `l` gets `f(slots[l])`, zero for an empty slot.
+#[inline(always)]
+fn lanes3<T: Copy>(slots: &[Option<T>; LANES], f: impl Fn(T) -> Vec3A) -> V3 {
+    V3::from_lanes(std::array::from_fn(|l| slots[l].map_or(Vec3A::ZERO, &f)))
+}
+
+/// `max(floor, x)` per lane where only `x` may be NaN (then `floor`): SSE `maxps` returns its
+/// second operand when either is NaN.
+#[inline(always)]
+fn fmax(floor: F, x: F) -> F {
+    x.fast_max(floor)
+}
+
+/// What the rows of one pass share.
+#[derive(Clone, Copy)]
+pub(crate) struct Pass {
+    pub inv_h: f32,
+    /// Soft position correction on (solve phase) or off (relax phase: speculative only).
+    pub use_bias: bool,
+    pub max_push: f32,
+}
+
+impl<const N: usize> ContactBatch<N> {
+    /// Packs up to four prepared constraints (`lanes`: indices into `constraints`, whose
+    /// points are in `points`).
+    pub(crate) fn pack(
+        lanes_of: &[u32],
+        constraints: &[ContactConstraint],
+        points: &[ConstraintPoint],
+        states: &[BodyState],
+    ) -> Self {
+        let slots: [Option<&ContactConstraint>; LANES] =
+            std::array::from_fn(|l| lanes_of.get(l).map(|&i| &constraints[i as usize]));
+        let constraint = std::array::from_fn(|l| lanes_of.get(l).copied().unwrap_or(u32::MAX));
+        let body_a = slots.map(|c| c.map_or(0, |c| c.body_a));
+        let body_b = slots.map(|c| c.map_or(0, |c| c.body_b));
+        let mut writes_a = 0u8;
+        let mut writes_b = 0u8;
+        for (l, c) in slots.iter().enumerate() {
+            if let Some(c) = c {
+                writes_a |= (c.writes & 1) << l;
+                writes_b |= ((c.writes >> 1) & 1) << l;
+            }
+        }
+        let point_slots: [[Option<&ConstraintPoint>; LANES]; N] = std::array::from_fn(|k| {
+            slots.map(|c| {
+                c.filter(|c| k < usize::from(c.count))
+                    .map(|c| &points[c.first as usize + k])
+            })
+        });
+        let one_point = |k: usize| {
+            let s = &point_slots[k];
+            PointLanes {
+                base_separation: lanes(s, |p| p.base_separation),
+                normal_impulse: lanes(s, |p| p.normal_impulse),
+                max_normal_impulse: lanes(s, |p| p.max_normal_impulse),
+                normal_mass: lanes(s, |p| p.normal_mass),
+                inv_normal_mass: lanes(s, |p| p.inv_normal_mass),
+                relative_velocity: lanes(s, |p| p.relative_velocity),
+                twist_lever: lanes(s, |p| p.twist_lever),
+                active: lanes(s, |_| 1.0),
+                rn_a: lanes3(s, |p| p.rn_a),
+                rn_b: lanes3(s, |p| p.rn_b),
+                irn_a: lanes3(s, |p| p.irn_a),
+                irn_b: lanes3(s, |p| p.irn_b),
+            }
+        };
+        let count = lanes(&slots, |c| f32::from(c.count));
+        Self {
+            constraint,
+            body_a,
+            body_b,
+            writes_a,
+            writes_b,
+            inv_mass_a: V3::from_lanes(body_a.map(|i| states[i as usize].inv_mass)),
+            inv_mass_b: V3::from_lanes(body_b.map(|i| states[i as usize].inv_mass)),
+            normal: lanes3(&slots, |c| c.normal),
+            tangent: [
+                lanes3(&slots, |c| c.tangent[0]),
+                lanes3(&slots, |c| c.tangent[1]),
+            ],
+            bias_rate: lanes(&slots, |c| c.softness.bias_rate),
+            mass_scale: lanes(&slots, |c| c.softness.mass_scale),
+            impulse_scale: lanes(&slots, |c| c.softness.impulse_scale),
+            soft_compliance: lanes(&slots, |c| {
+                if c.softness.mass_scale > 0.0 {
+                    c.softness.impulse_scale / c.softness.mass_scale
+                } else {
+                    0.0
+                }
+            }),
+            restitution: lanes(&slots, |c| c.restitution),
+            points: std::array::from_fn(one_point),
+            patch: lanes(&slots, |c| {
+                if c.block.patch {
+                    f32::from_bits(u32::MAX)
+                } else {
+                    0.0
+                }
+            }),
+            patch_k: lanes(&slots, |c| c.block.patch_k),
+            row_sum: std::array::from_fn(|k| lanes(&slots, |c| c.block.row_sum[k])),
+            coupling: std::array::from_fn(|k| lanes(&slots, |c| c.block.coupling[k])),
+            count,
+            inv_count: lanes(&slots, |c| 1.0 / f32::from(c.count.max(1))),
+            friction: lanes(&slots, |c| c.friction.friction),
+            tangent_impulse: [
+                lanes(&slots, |c| c.friction.tangent_impulse[0]),
+                lanes(&slots, |c| c.friction.tangent_impulse[1]),
+            ],
+            twist_impulse: lanes(&slots, |c| c.friction.twist_impulse),
+            tangent_mass: std::array::from_fn(|k| lanes(&slots, |c| c.friction.tangent_mass[k])),
+            slide_mass: lanes(&slots, |c| c.friction.slide_mass),
+            twist_mass: lanes(&slots, |c| c.friction.twist_mass),
+            rt_a: std::array::from_fn(|k| lanes3(&slots, |c| c.friction.rt_a[k])),
+            rt_b: std::array::from_fn(|k| lanes3(&slots, |c| c.friction.rt_b[k])),
+            irt_a: std::array::from_fn(|k| lanes3(&slots, |c| c.friction.irt_a[k])),
+            irt_b: std::array::from_fn(|k| lanes3(&slots, |c| c.friction.irt_b[k])),
+            in_a: lanes3(&slots, |c| c.friction.in_a),
+            in_b: lanes3(&slots, |c| c.friction.in_b),
+        }
+    }
+
+    /// Writes the accumulated impulses back to the constraints and their points.
+    pub(crate) fn unpack(
+        &self,
+        constraints: &mut [ContactConstraint],
+        points: &mut [ConstraintPoint],
+    ) {
+        let ti = self.tangent_impulse.map(F::to_array);
+        let twist = self.twist_impulse.to_array();
+        let ni = self.points.map(|p| p.normal_impulse.to_array());
+        let max_ni = self.points.map(|p| p.max_normal_impulse.to_array());
+        for (l, &ci) in self.constraint.iter().enumerate() {
+            let Some(c) = constraints.get_mut(ci as usize) else {
+                continue;
+            };
+            c.friction.tangent_impulse = [ti[0][l], ti[1][l]];
+            c.friction.twist_impulse = twist[l];
+            let first = c.first as usize;
+            for k in 0..usize::from(c.count).min(N) {
+                let p = &mut points[first + k];
+                p.normal_impulse = ni[k][l];
+                p.max_normal_impulse = max_ni[k][l];
+            }
+        }
+    }
+
+    /// Re-applies last step's impulses.
+    pub(crate) fn warm_start(&self, states: &mut [BodyState]) {
+        let mut a = gather_velocities(states, &self.body_a);
+        let mut b = gather_velocities(states, &self.body_b);
+        let [t1, t2] = self.tangent_impulse;
+        let tw = self.twist_impulse;
+        let mut p = self.tangent[0].scale(t1) + self.tangent[1].scale(t2);
+        let mut wa = self.irt_a[0].scale(t1) + self.irt_a[1].scale(t2) + self.in_a.scale(tw);
+        let mut wb = self.irt_b[0].scale(t1) + self.irt_b[1].scale(t2) + self.in_b.scale(tw);
+        for cp in &self.points {
+            p += self.normal.scale(cp.normal_impulse);
+            wa += cp.irn_a.scale(cp.normal_impulse);
+            wb += cp.irn_b.scale(cp.normal_impulse);
+        }
+        a.v -= self.inv_mass_a * p;
+        a.w -= wa;
+        b.v += self.inv_mass_b * p;
+        b.w += wb;
+        scatter_velocities(states, &self.body_a, self.writes_a, a);
+        scatter_velocities(states, &self.body_b, self.writes_b, b);
+    }
+
+    /// One Gauss–Seidel pass: the normal rows (shared step, then point by point), then
+    /// friction at the manifold centre bounded by the new normal impulses.
+    pub(crate) fn solve(&mut self, states: &mut [BodyState], pass: Pass) {
+        let mut a = gather_velocities(states, &self.body_a);
+        let mut b = gather_velocities(states, &self.body_b);
+        let (dp_a, dtheta_a) = gather_deltas(states, &self.body_a);
+        let (dp_b, dtheta_b) = gather_deltas(states, &self.body_b);
+        let n = self.normal;
+        let zero = F::ZERO;
+        let one = F::ONE;
+        // Linearised current separation: base + n·(Δp_b − Δp_a) + Δθ_b·(r_b×n) − Δθ_a·(r_a×n);
+        // normal velocities all from the start-of-pass state (the block's coupling tracks
+        // them through the sweep).
+        let dpn = (dp_b - dp_a).dot(n);
+        let dvn = (b.v - a.v).dot(n);
+        let inv_h = F::splat(pass.inv_h);
+        let neg_max_push = F::splat(-pass.max_push);
+        let mut vn = [zero; N];
+        // Each point's row: bias, mass scale, impulse scale, and compliance in the shared step.
+        let mut bias = [zero; N];
+        let mut mass_scale = [one; N];
+        let mut impulse_scale = [zero; N];
+        let mut compliance = [zero; N];
+        for k in 0..N {
+            let cp = &self.points[k];
+            let sep = cp.base_separation + dpn + dtheta_b.dot(cp.rn_b) - dtheta_a.dot(cp.rn_a);
+            vn[k] = dvn + b.w.dot(cp.rn_b) - a.w.dot(cp.rn_a);
+            let speculative = sep.simd_gt(zero);
+            if pass.use_bias {
+                // No dead zone (as in Box2D v3 and rapier): a resting contact settles at the
+                // soft spring's static deflection.
+                let soft = fmax(neg_max_push, self.bias_rate * sep);
+                bias[k] = speculative.select(sep * inv_h, soft);
+                mass_scale[k] = speculative.select(one, self.mass_scale);
+                impulse_scale[k] = speculative.select(zero, self.impulse_scale);
+                compliance[k] = speculative.select(zero, self.soft_compliance * cp.inv_normal_mass);
+            } else {
+                bias[k] = speculative.select(sep * inv_h, zero);
+            }
+        }
+        let mut applied = [zero; N];
+        if N > 1 && self.patch.any() {
+            self.solve_patch(&bias, &compliance, &mut vn, &mut applied);
+        }
+        for j in 0..N {
+            let cp = &mut self.points[j];
+            let imp = -cp.normal_mass * mass_scale[j] * (vn[j] + bias[j])
+                - impulse_scale[j] * cp.normal_impulse;
+            let new = fmax(zero, cp.normal_impulse + imp);
+            let imp = new - cp.normal_impulse;
+            cp.normal_impulse = new;
+            cp.max_normal_impulse = fmax(cp.max_normal_impulse, imp);
+            applied[j] += imp;
+            for i in j + 1..N {
+                vn[i] += self.coupling[PAIR_SLOT[j][i]] * imp;
+            }
+        }
+        let mut total = zero;
+        let (mut da, mut db) = (V3::ZERO, V3::ZERO);
+        for (cp, &imp) in self.points.iter().zip(&applied) {
+            total += imp;
+            da += cp.irn_a.scale(imp);
+            db += cp.irn_b.scale(imp);
+        }
+        let p = n.scale(total);
+        a.v -= self.inv_mass_a * p;
+        a.w -= da;
+        b.v += self.inv_mass_b * p;
+        b.w += db;
+        self.solve_friction(&mut a, &mut b);
+        scatter_velocities(states, &self.body_a, self.writes_a, a);
+        scatter_velocities(states, &self.body_b, self.writes_b, b);
+    }
+
+    /// One step of all the manifold's points together (the mean of their rows: one impulse at the
+    /// patch centre, shared equally), before the per-point Gauss–Seidel pass.
+    ///
+    /// Points solved one after another are biased: the first one stops the whole approach on its
+    /// own corner and tips the body, the others only partly undo it. A perfectly symmetric stack of
+    /// boxes thus left its first step spinning (0.01–0.02 rad/s for three boxes), and a stack of
+    /// frictionless boxes, which soft contacts cannot hold against a sideways offset (a box off
+    /// centre tilts its support, then slides down it), was seeded to collapse within ~35 s. The
+    /// shared step removes the common approach without torque, so the per-point pass only fixes
+    /// the differences. It drives the mean of the per-point residuals (soft:
+    /// `vn + bias + impulse_scale·λ / (mass_scale·m)`; speculative: `vn + s/h`) to zero, so it has
+    /// the fixed point of the per-point rows and never works against them. Speculative rows take
+    /// part too: a box landing flat on the ground meets it with all four points speculative, and
+    /// solved one by one they tipped it and threw it sideways (a dropped five-box stack drifted
+    /// 2 cm; now 2 mm).
+    #[inline(always)]
+    fn solve_patch(
+        &mut self,
+        bias: &[F; N],
+        compliance: &[F; N],
+        vn: &mut [F; N],
+        applied: &mut [F; N],
+    ) {
+        let (mut residual, mut total_compliance) = (F::ZERO, F::ZERO);
+        let mut min_impulse = F::splat(f32::MAX);
+        for k in 0..N {
+            let cp = &self.points[k];
+            let active = cp.active.simd_gt(F::ZERO);
+            residual += cp.active * (vn[k] + bias[k] + compliance[k] * cp.normal_impulse);
+            total_compliance += compliance[k];
+            min_impulse = active.select(cp.normal_impulse.fast_min(min_impulse), min_impulse);
+        }
+        let inv = self.inv_count;
+        let k = self.patch_k + total_compliance * inv * inv;
+        // No point's accumulated impulse may go below zero.
+        let total = fmax(-self.count * min_impulse, -(residual * inv) / k);
+        let each = self.patch.select(total * inv, F::ZERO);
+        for k in 0..N {
+            let cp = &mut self.points[k];
+            let mine = each * cp.active;
+            cp.normal_impulse += mine;
+            cp.max_normal_impulse = fmax(cp.max_normal_impulse, mine);
+            applied[k] += mine;
+            vn[k] += mine * self.row_sum[k];
+        }
+    }
+
+    /// Coulomb friction in the contact plane (exact 2×2 mass while sticking, isotropic while
+    /// sliding) and twist friction about the normal, at the manifold centre.
+    #[inline(always)]
+    fn solve_friction(&mut self, a: &mut Velocities, b: &mut Velocities) {
+        let (mut total, mut twist_limit) = (F::ZERO, F::ZERO);
+        for cp in &self.points {
+            total += cp.normal_impulse;
+            twist_limit += cp.normal_impulse * cp.twist_lever;
+        }
+        let max_f = self.friction * total;
+        let max_f2 = max_f * max_f;
+        let [t1, t2] = self.tangent;
+        let dv = b.v - a.v;
+        let vt1 = dv.dot(t1) + b.w.dot(self.rt_b[0]) - a.w.dot(self.rt_a[0]);
+        let vt2 = dv.dot(t2) + b.w.dot(self.rt_b[1]) - a.w.dot(self.rt_a[1]);
+        let m = self.tangent_mass;
+        let [old1, old2] = self.tangent_impulse;
+        let stick1 = old1 - (m[0] * vt1 + m[1] * vt2);
+        let stick2 = old2 - (m[1] * vt1 + m[2] * vt2);
+        let slide1 = old1 - self.slide_mass * vt1;
+        let slide2 = old2 - self.slide_mass * vt2;
+        let len2 = slide1 * slide1 + slide2 * slide2;
+        let clamp = len2.simd_gt(max_f2).select(max_f / len2.sqrt(), F::ONE);
+        let sliding = (stick1 * stick1 + stick2 * stick2).simd_gt(max_f2);
+        let l1 = sliding.select(slide1 * clamp, stick1);
+        let l2 = sliding.select(slide2 * clamp, stick2);
+        let (d1, d2) = (l1 - old1, l2 - old2);
+        self.tangent_impulse = [l1, l2];
+        let p = t1.scale(d1) + t2.scale(d2);
+        a.v -= self.inv_mass_a * p;
+        a.w -= self.irt_a[0].scale(d1) + self.irt_a[1].scale(d2);
+        b.v += self.inv_mass_b * p;
+        b.w += self.irt_b[0].scale(d1) + self.irt_b[1].scale(d2);
+        // Twist about the normal (a single point has no lever, so no impulse).
+        let limit = self.friction * twist_limit;
+        let wt = (b.w - a.w).dot(self.normal);
+        let l = (self.twist_impulse - self.twist_mass * wt)
+            .fast_max(-limit)
+            .fast_min(limit);
+        let d = l - self.twist_impulse;
+        self.twist_impulse = l;
+        a.w -= self.in_a.scale(d);
+        b.w += self.in_b.scale(d);
+    }
+
+    /// After substepping: points that approached faster than `threshold` and carried load
+    /// get a separating velocity `e · |approach speed|`.
+    pub(crate) fn apply_restitution(&mut self, states: &mut [BodyState], threshold: f32) {
+        let bouncy = self.restitution.simd_gt(F::ZERO);
+        if !bouncy.any() {
+            return;
+        }
+        let mut a = gather_velocities(states, &self.body_a);
+        let mut b = gather_velocities(states, &self.body_b);
+        let n = self.normal;
+        let neg_threshold = F::splat(-threshold);
+        for cp in &mut self.points {
+            let fast = cp.relative_velocity.simd_le(neg_threshold);
+            let loaded = cp.max_normal_impulse.simd_gt(F::ZERO);
+            let bounce = bouncy & fast & loaded;
+            if !bounce.any() {
+                continue;
+            }
+            let vn = (b.v - a.v).dot(n) + b.w.dot(cp.rn_b) - a.w.dot(cp.rn_a);
+            let imp = -cp.normal_mass * (vn + self.restitution * cp.relative_velocity);
+            let new = fmax(F::ZERO, cp.normal_impulse + imp);
+            let imp = bounce.select(new - cp.normal_impulse, F::ZERO);
+            cp.normal_impulse += imp;
+            cp.max_normal_impulse =
+                bounce.select(fmax(cp.max_normal_impulse, imp), cp.max_normal_impulse);
+            let p = n.scale(imp);
+            a.v -= self.inv_mass_a * p;
+            a.w -= cp.irn_a.scale(imp);
+            b.v += self.inv_mass_b * p;
+            b.w += cp.irn_b.scale(imp);
+        }
+        scatter_velocities(states, &self.body_a, self.writes_a, a);
+        scatter_velocities(states, &self.body_b, self.writes_b, b);
+    }
+}

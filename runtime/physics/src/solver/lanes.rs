@@ -1,0 +1,195 @@
+//! [`V3`]: a 3-vector over four lanes (structure of arrays), and moving body velocities
+//! between [`BodyState`]s and lanes. The contact solver works on four manifolds at once, one
+//! per lane, none of them sharing a body it writes (see [`super::contact_batch`]).
+
+use std::ops::{Add, AddAssign, Mul, Neg, Sub, SubAssign};
+
+use glam::Vec3A;
+use wide::f32x4;
+
+use super::body_state::BodyState;
+
+/// Four `f32` lanes.
+pub(crate) type F = f32x4;
+
+/// Manifolds solved together.
+pub(crate) const LANES: usize = 4;
+
+/// One 3-vector per lane.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub(crate) struct V3 {
+    pub x: F,
+    pub y: F,
+    pub z: F,
+}
+
+impl V3 {
+    pub const ZERO: Self = Self {
+        x: F::ZERO,
+        y: F::ZERO,
+        z: F::ZERO,
+    };
+
+    /// Lane `l` holds `v[l]` (a 4×4 transpose).
+    #[inline(always)]
+    pub fn from_lanes(v: [Vec3A; LANES]) -> Self {
+        let [x, y, z, _] = F::transpose(v.map(|v| F::new(v.extend(0.0).to_array())));
+        Self { x, y, z }
+    }
+
+    /// The vector in each lane.
+    #[inline(always)]
+    pub fn to_lanes(self) -> [Vec3A; LANES] {
+        F::transpose([self.x, self.y, self.z, F::ZERO]).map(|c| {
+            let [x, y, z, _] = c.to_array();
+            Vec3A::new(x, y, z)
+        })
+    }
+
+    #[inline(always)]
+    pub fn dot(self, o: Self) -> F {
+        self.x * o.x + self.y * o.y + self.z * o.z
+    }
+
+    /// Each lane scaled by its own factor.
+    #[inline(always)]
+    pub fn scale(self, s: F) -> Self {
+        Self {
+            x: self.x * s,
+            y: self.y * s,
+            z: self.z * s,
+        }
+    }
+}
+
+impl Add for V3 {
+    type Output = Self;
+    #[inline(always)]
+    fn add(self, o: Self) -> Self {
+        Self {
+            x: self.x + o.x,
+            y: self.y + o.y,
+            z: self.z + o.z,
+        }
+    }
+}
+
+impl Sub for V3 {
+    type Output = Self;
+    #[inline(always)]
+    fn sub(self, o: Self) -> Self {
+        Self {
+            x: self.x - o.x,
+            y: self.y - o.y,
+            z: self.z - o.z,
+        }
+    }
+}
+
+/// Component-wise product (per-axis inverse masses).
+impl Mul for V3 {
+    type Output = Self;
+    #[inline(always)]
+    fn mul(self, o: Self) -> Self {
+        Self {
+            x: self.x * o.x,
+            y: self.y * o.y,
+            z: self.z * o.z,
+        }
+    }
+}
+
+impl Neg for V3 {
+    type Output = Self;
+    #[inline(always)]
+    fn neg(self) -> Self {
+        Self {
+            x: -self.x,
+            y: -self.y,
+            z: -self.z,
+        }
+    }
+}
+
+impl AddAssign for V3 {
+    #[inline(always)]
+    fn add_assign(&mut self, o: Self) {
+        *self = *self + o;
+    }
+}
+
+impl SubAssign for V3 {
+    #[inline(always)]
+    fn sub_assign(&mut self, o: Self) {
+        *self = *self - o;
+    }
+}
+
+/// Velocities of the bodies on one side of four manifolds.
+#[derive(Clone, Copy)]
+pub(crate) struct Velocities {
+    pub v: V3,
+    pub w: V3,
+}
+
+/// Reads the velocities of `bodies[l]` into lane `l`.
+#[inline(always)]
+pub(crate) fn gather_velocities(states: &[BodyState], bodies: &[u32; LANES]) -> Velocities {
+    let s = bodies.map(|i| &states[i as usize]);
+    Velocities {
+        v: V3::from_lanes(s.map(|s| s.v)),
+        w: V3::from_lanes(s.map(|s| s.w)),
+    }
+}
+
+/// Reads the position deltas (`dp`, `dθ`) of `bodies[l]` into lane `l`.
+#[inline(always)]
+pub(crate) fn gather_deltas(states: &[BodyState], bodies: &[u32; LANES]) -> (V3, V3) {
+    let s = bodies.map(|i| &states[i as usize]);
+    (
+        V3::from_lanes(s.map(|s| s.dp)),
+        V3::from_lanes(s.map(|s| s.dtheta)),
+    )
+}
+
+/// Writes lane `l` back to `bodies[l]` where bit `l` of `writes` is set (dynamic bodies; the
+/// others' velocities do not change, and several lanes may share them).
+#[inline(always)]
+pub(crate) fn scatter_velocities(
+    states: &mut [BodyState],
+    bodies: &[u32; LANES],
+    writes: u8,
+    vel: Velocities,
+) {
+    let (v, w) = (vel.v.to_lanes(), vel.w.to_lanes());
+    for l in 0..LANES {
+        if writes & (1 << l) != 0 {
+            let s = &mut states[bodies[l] as usize];
+            s.v = v[l];
+            s.w = w[l];
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn lanes_round_trip_and_dot_matches_glam() {
+        let a = [
+            Vec3A::new(1.0, 2.0, 3.0),
+            Vec3A::new(-4.0, 5.5, 0.25),
+            Vec3A::new(0.0, -1.0, 9.0),
+            Vec3A::new(7.0, 0.5, -2.0),
+        ];
+        let b = a.map(|v| Vec3A::new(v.z, v.y, v.x) * 0.5 - Vec3A::ONE);
+        let (va, vb) = (V3::from_lanes(a), V3::from_lanes(b));
+        assert_eq!(va.to_lanes(), a);
+        let dots = va.dot(vb).to_array();
+        for l in 0..LANES {
+            assert_eq!(dots[l], a[l].dot(b[l]));
+        }
+        assert_eq!((va * vb - vb).to_lanes()[2], a[2] * b[2] - b[2]);
+    }
+}
