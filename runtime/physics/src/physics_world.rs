@@ -44,8 +44,10 @@ pub struct PhysicsWorld {
     pub(crate) solver_handles: Vec<u32>,
     pub(crate) constraints: Vec<ContactConstraint>,
     pub(crate) constraint_points: Vec<crate::solver::contact_constraint::ConstraintPoint>,
+    /// Solver index and dynamic flag by body arena index (see [`SolverSlot`]).
+    pub(crate) solver_slots: Vec<SolverSlot>,
     /// The constraints as SIMD batches for the substeps.
-    pub(crate) contact_batches: crate::solver::coloring::ContactBatches,
+    pub(crate) contact_batches: crate::solver::batching::ContactBatches,
     pub(crate) new_pairs: Vec<(u32, u32)>,
     /// Arena indices of the bodies that take part in this step (awake, not static, not
     /// quarantined), gathered by the pre-step and by wake-ups; sleeping bodies are not in it.
@@ -60,6 +62,23 @@ pub struct PhysicsWorld {
     pub(crate) islands: HashMap<u32, Vec<BodyHandle>>,
     pub(crate) next_island: u32,
     pub(crate) time: f64,
+}
+
+/// Where an awake body sits in the solver arrays this step, by body arena index: the pair
+/// loop of the solve stage reads these 8 bytes instead of the body (a cache miss per pair).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) struct SolverSlot {
+    /// Solver index; 0 for a body not in this step (static, asleep).
+    pub index: u32,
+    /// Dynamic and in the step (the solver writes its velocity).
+    pub dynamic: bool,
+}
+
+impl SolverSlot {
+    pub const NONE: Self = Self {
+        index: 0,
+        dynamic: false,
+    };
 }
 
 impl Default for PhysicsWorld {
@@ -85,6 +104,7 @@ impl PhysicsWorld {
             solver_handles: Vec::new(),
             constraints: Vec::new(),
             constraint_points: Vec::new(),
+            solver_slots: Vec::new(),
             contact_batches: Default::default(),
             new_pairs: Vec::new(),
             deepest_contact: Vec::new(),

@@ -5,6 +5,7 @@ use glam::{Vec3, Vec3A};
 use crate::body_type::BodyType;
 use crate::narrowphase::narrow_phase::is_active;
 use crate::physics_world::PhysicsWorld;
+use crate::physics_world::SolverSlot;
 use crate::rigid_body::mask_mat;
 use crate::solver::body_state::BodyState;
 use crate::solver::contact_constraint::{
@@ -25,6 +26,9 @@ impl PhysicsWorld {
             if let Some(b) = self.bodies.arena.get_by_index_mut(idx) {
                 b.solver_index = 0;
             }
+            if let Some(slot) = self.solver_slots.get_mut(idx as usize) {
+                *slot = SolverSlot::NONE;
+            }
         }
         self.active_bodies.sort_unstable();
         self.solver_bodies.clear();
@@ -43,6 +47,13 @@ impl PhysicsWorld {
             b.solver_index = self.solver_bodies.len() as u32;
             self.solver_handles.push(i);
             let dynamic = b.body_type == BodyType::Dynamic;
+            if self.solver_slots.len() <= i as usize {
+                self.solver_slots.resize(i as usize + 1, SolverSlot::NONE);
+            }
+            self.solver_slots[i as usize] = SolverSlot {
+                index: b.solver_index,
+                dynamic,
+            };
             let lin_mask = b.locked.translation_mask();
             let ang_mask = b.locked.rotation_mask();
             let inv_i = if dynamic {
@@ -105,25 +116,19 @@ impl PhysicsWorld {
         self.constraint_points.clear();
         let mut contacts = 0u32;
         for (pi, pair) in self.narrowphase.pairs.iter().enumerate() {
-            let flag = |h: crate::body_handle::BodyHandle| {
-                self.active_flags
+            if pair.manifolds.is_empty() {
+                continue;
+            }
+            // Compact per-body slots, not the bodies themselves: this loop visits every pair.
+            let slot = |h: crate::body_handle::BodyHandle| {
+                self.solver_slots
                     .get(h.index() as usize)
                     .copied()
-                    .unwrap_or(false)
+                    .unwrap_or(SolverSlot::NONE)
             };
-            if pair.manifolds.is_empty() || !flag(pair.body_a) && !flag(pair.body_b) {
-                continue;
-            }
-            let (Some(ba), Some(bb)) = (self.bodies.get(pair.body_a), self.bodies.get(pair.body_b))
-            else {
-                continue;
-            };
-            let (ia, ib) = (ba.solver_index, bb.solver_index);
-            if ia == 0 && ib == 0 {
-                continue;
-            }
-            let a_dyn = ia != 0 && ba.body_type == BodyType::Dynamic;
-            let b_dyn = ib != 0 && bb.body_type == BodyType::Dynamic;
+            let (sa, sb) = (slot(pair.body_a), slot(pair.body_b));
+            let (ia, ib) = (sa.index, sb.index);
+            let (a_dyn, b_dyn) = (sa.dynamic, sb.dynamic);
             if !a_dyn && !b_dyn {
                 continue;
             }
@@ -213,34 +218,33 @@ impl PhysicsWorld {
             &mut self.contact_batches,
             &params,
         );
-        self.contact_batches
-            .unpack(&mut self.constraints, &mut self.constraint_points);
 
         // Store impulses for warm starting and events; a manifold's friction is shared among
         // its points in proportion to their normal impulses.
-        for c in &self.constraints {
-            let pair = &mut self.narrowphase.pairs[c.pair as usize];
+        let (constraints, pairs) = (&self.constraints, &mut self.narrowphase.pairs);
+        self.contact_batches.for_each_result(|ci, result| {
+            let c = &constraints[ci as usize];
+            let pair = &mut pairs[c.pair as usize];
             let m = &mut pair.manifolds[c.manifold as usize];
-            let pts =
-                &self.constraint_points[c.first as usize..c.first as usize + c.count as usize];
-            let f = &c.friction;
-            let tangent = c.tangent[0] * f.tangent_impulse[0] + c.tangent[1] * f.tangent_impulse[1];
-            let total: f32 = pts.iter().map(|cp| cp.normal_impulse).sum();
-            for (k, cp) in pts.iter().enumerate() {
+            let count = usize::from(c.count);
+            let normal = &result.normal_impulse[..count];
+            let [t1, t2] = result.tangent_impulse;
+            let tangent = Vec3::from(c.tangent[0] * t1 + c.tangent[1] * t2);
+            let total: f32 = normal.iter().sum();
+            for (k, p) in m.points.iter_mut().take(count).enumerate() {
                 let share = if total > 0.0 {
-                    cp.normal_impulse / total
+                    normal[k] / total
                 } else {
-                    1.0 / f32::from(c.count)
+                    1.0 / count as f32
                 };
-                let p = &mut m.points[k];
-                p.normal_impulse = cp.normal_impulse;
-                p.tangent_impulse = Vec3::from(tangent * share);
-                p.twist_impulse = f.twist_impulse * share;
-                p.max_normal_impulse = cp.max_normal_impulse;
+                p.normal_impulse = normal[k];
+                p.tangent_impulse = tangent * share;
+                p.twist_impulse = result.twist_impulse * share;
+                p.max_normal_impulse = result.max_normal_impulse[k];
             }
             // Every non-empty manifold of a solved pair is solved: the pair's flag is exact.
             let pushing = m.points.iter().any(|p| p.max_normal_impulse > 0.0);
             pair.solved_pushing = Some(pair.solved_pushing == Some(true) || pushing);
-        }
+        });
     }
 }

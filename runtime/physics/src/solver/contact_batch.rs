@@ -4,7 +4,7 @@
 //! The rows are those of the scalar formulation documented on [`ContactConstraint`],
 //! [`NormalBlock`](super::contact_constraint::NormalBlock) and
 //! [`FrictionPart`](super::contact_constraint::FrictionPart); here every branch is a lane
-//! select. The lanes of one batch never share a body they write ([`super::coloring`]), so
+//! select. The lanes of one batch never share a body they write ([`super::batching`]), so
 //! solving them together gives each manifold exactly what solving it alone would.
 //! `N` is the point count the batch is laid out for: 1 (spheres, capsule ends) or 4 (faces;
 //! manifolds of 2 or 3 points leave the rest inactive). An empty lane has zero masses and
@@ -34,6 +34,19 @@ struct PointLanes {
     rn_b: V3,
     irn_a: V3,
     irn_b: V3,
+}
+
+/// The impulses one manifold ends the step with.
+#[derive(Clone, Copy, Debug, Default)]
+pub(crate) struct LaneResult {
+    /// Accumulated normal impulse per point (points past the manifold's count are 0), N·s.
+    pub normal_impulse: [f32; 4],
+    /// Largest single normal impulse of the step per point.
+    pub max_normal_impulse: [f32; 4],
+    /// Friction impulse along the constraint's two tangents.
+    pub tangent_impulse: [f32; 2],
+    /// Twist friction impulse about the normal.
+    pub twist_impulse: f32,
 }
 
 /// Four manifolds of at most `N` points as lanes.
@@ -207,28 +220,26 @@ impl<const N: usize> ContactBatch<N> {
         }
     }
 
-    /// Writes the accumulated impulses back to the constraints and their points.
-    pub(crate) fn unpack(
-        &self,
-        constraints: &mut [ContactConstraint],
-        points: &mut [ConstraintPoint],
-    ) {
+    /// Calls `f(constraint index, impulses)` for each lane in use.
+    pub(crate) fn for_each_result(&self, mut f: impl FnMut(u32, &LaneResult)) {
         let ti = self.tangent_impulse.map(F::to_array);
         let twist = self.twist_impulse.to_array();
         let ni = self.points.map(|p| p.normal_impulse.to_array());
         let max_ni = self.points.map(|p| p.max_normal_impulse.to_array());
         for (l, &ci) in self.constraint.iter().enumerate() {
-            let Some(c) = constraints.get_mut(ci as usize) else {
+            if ci == u32::MAX {
                 continue;
-            };
-            c.friction.tangent_impulse = [ti[0][l], ti[1][l]];
-            c.friction.twist_impulse = twist[l];
-            let first = c.first as usize;
-            for k in 0..usize::from(c.count).min(N) {
-                let p = &mut points[first + k];
-                p.normal_impulse = ni[k][l];
-                p.max_normal_impulse = max_ni[k][l];
             }
+            let mut r = LaneResult {
+                tangent_impulse: [ti[0][l], ti[1][l]],
+                twist_impulse: twist[l],
+                ..LaneResult::default()
+            };
+            for k in 0..N {
+                r.normal_impulse[k] = ni[k][l];
+                r.max_normal_impulse[k] = max_ni[k][l];
+            }
+            f(ci, &r);
         }
     }
 

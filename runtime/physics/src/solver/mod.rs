@@ -1,7 +1,7 @@
 //! Soft-step impulse solver: [`Softness`], solver bodies, contact constraints, substep loop.
 
+pub(crate) mod batching;
 pub(crate) mod body_state;
-pub(crate) mod coloring;
 pub(crate) mod contact_batch;
 pub(crate) mod contact_constraint;
 pub(crate) mod lanes;

@@ -3,8 +3,8 @@
 
 use glam::{Quat, Vec3, Vec3A};
 
+use super::batching::ContactBatches;
 use super::body_state::BodyState;
-use super::coloring::ContactBatches;
 use super::contact_batch::Pass;
 use super::solver_body::SolverBody;
 

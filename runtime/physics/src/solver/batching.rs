@@ -1,0 +1,207 @@
+//! [`ContactBatches`]: the step's contact constraints dealt into [`ContactBatch`]es of four
+//! with no dynamic body twice in one batch, so that four manifolds are solved at once without
+//! racing on a body, in about the order the constraints come in.
+//!
+//! Order matters to a Gauss–Seidel sweep: one pass carries a load along a chain of contacts
+//! as far as the chain follows the order. Graph colouring (Box2D v3) solves a colour at a
+//! time across the whole scene, so a pass carries a pile's weight down only a few contacts,
+//! and the 8,000 poured spheres sank 3.3 cm instead of 2.3 cm. Here each constraint joins
+//! the oldest of a few open batches that does not write its bodies yet, and a batch is solved
+//! in the order it fills: the sweep follows the constraints' order within a few places.
+
+use super::body_state::BodyState;
+use super::contact_batch::{ContactBatch, LaneResult};
+use super::contact_constraint::{ConstraintPoint, ContactConstraint};
+use super::lanes::LANES;
+
+/// Batches being filled at once, per layout. More finds a free lane more often (fuller
+/// batches), fewer keeps closer to the constraints' order.
+const OPEN_BATCHES: usize = 8;
+
+/// A batch being filled: its constraints and the bodies they write.
+#[derive(Clone, Copy, Debug)]
+struct OpenBatch {
+    lanes: [u32; LANES],
+    len: usize,
+    written: [u32; 2 * LANES],
+    written_len: usize,
+}
+
+impl OpenBatch {
+    const EMPTY: Self = Self {
+        lanes: [u32::MAX; LANES],
+        len: 0,
+        written: [0; 2 * LANES],
+        written_len: 0,
+    };
+
+    fn writes_any(&self, bodies: &[u32]) -> bool {
+        self.written[..self.written_len]
+            .iter()
+            .any(|w| bodies.contains(w))
+    }
+
+    fn push(&mut self, ci: u32, bodies: &[u32]) {
+        self.lanes[self.len] = ci;
+        self.len += 1;
+        for &b in bodies {
+            self.written[self.written_len] = b;
+            self.written_len += 1;
+        }
+    }
+}
+
+/// The batches of one step, in solve order, and the scratch that builds them.
+#[derive(Debug, Default)]
+pub(crate) struct ContactBatches {
+    /// Manifolds laid out for four points (faces; two- and three-point manifolds too).
+    pub four: Vec<ContactBatch<4>>,
+    /// One-point manifolds (spheres, capsule ends, vertex contacts).
+    pub one: Vec<ContactBatch<1>>,
+    /// Batches being filled, oldest first, per layout (one point, four points).
+    open: [Vec<OpenBatch>; 2],
+}
+
+impl ContactBatches {
+    /// Deals `constraints` into batches and packs them. Deterministic: it depends only on
+    /// the constraints and their order.
+    pub(crate) fn build(
+        &mut self,
+        constraints: &[ContactConstraint],
+        points: &[ConstraintPoint],
+        states: &[BodyState],
+    ) {
+        self.four.clear();
+        self.one.clear();
+        for (ci, c) in constraints.iter().enumerate() {
+            let layout = usize::from(c.count > 1);
+            let mut bodies = [0u32; 2];
+            let mut n = 0;
+            if c.writes & 1 != 0 {
+                bodies[n] = c.body_a;
+                n += 1;
+            }
+            if c.writes & 2 != 0 {
+                bodies[n] = c.body_b;
+                n += 1;
+            }
+            let bodies = &bodies[..n];
+            let open = &mut self.open[layout];
+            let slot = match open.iter().position(|b| !b.writes_any(bodies)) {
+                Some(i) => i,
+                None => {
+                    if open.len() == OPEN_BATCHES {
+                        let oldest = open.remove(0);
+                        self.emit(layout, &oldest, constraints, points, states);
+                    }
+                    let open = &mut self.open[layout];
+                    open.push(OpenBatch::EMPTY);
+                    open.len() - 1
+                }
+            };
+            let open = &mut self.open[layout];
+            open[slot].push(ci as u32, bodies);
+            if open[slot].len == LANES {
+                let full = open.remove(slot);
+                self.emit(layout, &full, constraints, points, states);
+            }
+        }
+        for layout in 0..2 {
+            let open = std::mem::take(&mut self.open[layout]);
+            for b in &open {
+                self.emit(layout, b, constraints, points, states);
+            }
+            self.open[layout] = open;
+            self.open[layout].clear();
+        }
+    }
+
+    fn emit(
+        &mut self,
+        layout: usize,
+        batch: &OpenBatch,
+        constraints: &[ContactConstraint],
+        points: &[ConstraintPoint],
+        states: &[BodyState],
+    ) {
+        let lanes = &batch.lanes[..batch.len];
+        if layout == 1 {
+            self.four
+                .push(ContactBatch::pack(lanes, constraints, points, states));
+        } else {
+            self.one
+                .push(ContactBatch::pack(lanes, constraints, points, states));
+        }
+    }
+
+    /// Calls `f(constraint index, impulses)` for every constraint, batch by batch.
+    pub(crate) fn for_each_result(&self, mut f: impl FnMut(u32, &LaneResult)) {
+        self.four.iter().for_each(|b| b.for_each_result(&mut f));
+        self.one.iter().for_each(|b| b.for_each_result(&mut f));
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use glam::Vec3A;
+
+    use super::*;
+    use crate::solver::contact_constraint::{FrictionPart, NormalBlock};
+    use crate::solver::Softness;
+
+    fn constraint(body_a: u32, body_b: u32, writes: u8, count: u8) -> ContactConstraint {
+        ContactConstraint {
+            body_a,
+            body_b,
+            writes,
+            normal: Vec3A::Y,
+            tangent: [Vec3A::X, Vec3A::Z],
+            restitution: 0.0,
+            softness: Softness::RIGID,
+            first: 0,
+            count,
+            pair: 0,
+            manifold: 0,
+            friction: FrictionPart::default(),
+            block: NormalBlock::default(),
+        }
+    }
+
+    /// Every constraint lands in exactly one lane of one batch of its layout, and no batch
+    /// has a written body twice.
+    #[test]
+    fn every_constraint_once_and_no_written_body_twice_in_a_batch() {
+        let bodies = 80u32;
+        let mut constraints = Vec::new();
+        // A chain (each body touches the next), all on the static ground (index 0, never
+        // written), and a hub, body 1, touching every other body (79 contacts).
+        for b in 2..bodies {
+            constraints.push(constraint(b - 1, b, 3, 4));
+            constraints.push(constraint(0, b, 2, 1));
+            constraints.push(constraint(1, b, 3, if b % 2 == 0 { 1 } else { 3 }));
+        }
+        let points = vec![ConstraintPoint::default(); 4];
+        let states = vec![BodyState::STATIC; bodies as usize];
+        let mut batches = ContactBatches::default();
+        batches.build(&constraints, &points, &states);
+
+        let mut seen = vec![0u32; constraints.len()];
+        let mut check = |lanes: &[u32; LANES], four: bool| {
+            let mut written = Vec::new();
+            for &ci in lanes.iter().filter(|&&ci| ci != u32::MAX) {
+                seen[ci as usize] += 1;
+                let c = &constraints[ci as usize];
+                assert_eq!(c.count > 1, four, "constraint {ci} in the wrong layout");
+                for (bit, body) in [(1u8, c.body_a), (2, c.body_b)] {
+                    if c.writes & bit != 0 {
+                        assert!(!written.contains(&body), "body {body} twice in {lanes:?}");
+                        written.push(body);
+                    }
+                }
+            }
+        };
+        batches.four.iter().for_each(|b| check(&b.constraint, true));
+        batches.one.iter().for_each(|b| check(&b.constraint, false));
+        assert!(seen.iter().all(|&n| n == 1), "{seen:?}");
+    }
+}
