@@ -1,5 +1,6 @@
-//! One scene in one engine at 60 Hz × 4, full size, for a profiler: prints the scene's figure
-//! and the mean ms/step (every step counted, the first included).
+//! One scene in one engine at 60 Hz × 4, full size, for a profiler: prints the scene's figure,
+//! the mean ms/step (every step counted, the first included), the spread of single steps and,
+//! for Onyx, the time per stage.
 //!
 //! `cargo run --release -p onyx-physics-bench --example profile_scene -- pyramid [onyx|rapier] [repeats]`
 //! then e.g. `perf record -g target/release/examples/profile_scene pyramid onyx`.
@@ -26,13 +27,16 @@ fn main() -> anyhow::Result<()> {
         iterations: 4,
     };
     let (mut seconds, mut steps_run) = (0.0, 0usize);
+    let mut step_ms = Vec::new();
     for _ in 0..repeats {
         let mut e = engine.create(s);
         let mut trial = scene.build(e.as_mut(), s, Size::Full);
         let steps = scene.steps(s, Size::Full);
         let t = Instant::now();
         for _ in 0..steps {
+            let step = Instant::now();
             e.step();
+            step_ms.push(step.elapsed().as_secs_f64() * 1e3);
             trial.observe(e.as_ref());
         }
         seconds += t.elapsed().as_secs_f64();
@@ -50,5 +54,18 @@ fn main() -> anyhow::Result<()> {
         engine.name(),
         seconds * 1e3 / steps_run.max(1) as f64
     );
+    // The sweep reports the median step (first excluded); the quartiles show where time goes.
+    step_ms.sort_by(f64::total_cmp);
+    let at = |q: f64| step_ms[((step_ms.len() - 1) as f64 * q).round() as usize];
+    if !step_ms.is_empty() {
+        println!(
+            "  step ms: min {:.4}, quartiles {:.4} / {:.4} / {:.4}, max {:.4}",
+            at(0.0),
+            at(0.25),
+            at(0.5),
+            at(0.75),
+            at(1.0)
+        );
+    }
     Ok(())
 }

@@ -15,7 +15,9 @@ impl PhysicsWorld {
     pub(crate) fn update_touching(&mut self) {
         let slop = self.settings.linear_slop;
         self.report_pairs.clear();
-        for (i, p) in self.narrowphase.pairs.iter_mut().enumerate() {
+        // Only updated pairs were solved or can change (see `NarrowPhase::updated_pairs`).
+        for &i in &self.narrowphase.updated_pairs {
+            let p = &mut self.narrowphase.pairs[i as usize];
             let solved_pushing = p.solved_pushing.take();
             if !p.updated {
                 continue;
@@ -45,7 +47,7 @@ impl PhysicsWorld {
                     .push(make_event(ContactEventKind::Ended, p, &self.bodies, 0.0));
             }
             if p.touching {
-                self.report_pairs.push(i as u32);
+                self.report_pairs.push(i);
             }
         }
     }

@@ -18,7 +18,13 @@ impl PhysicsWorld {
             &self.active_flags,
         );
         // Wake touched sleepers now so they take part in this step's solve (their contacts
-        // with static bodies are unchanged since they fell asleep).
+        // with static bodies are unchanged since they fell asleep). Their pairs were not
+        // updated, so the later stages visit every pair this step.
+        if !wake.is_empty() {
+            let all = 0..self.narrowphase.pairs.len() as u32;
+            self.narrowphase.updated_pairs.clear();
+            self.narrowphase.updated_pairs.extend(all);
+        }
         for h in wake.drain(..) {
             self.wake_island(h);
         }

@@ -115,7 +115,8 @@ impl PhysicsWorld {
         self.constraints.clear();
         self.constraint_points.clear();
         let mut contacts = 0u32;
-        for (pi, pair) in self.narrowphase.pairs.iter().enumerate() {
+        for &pi in &self.narrowphase.updated_pairs {
+            let pair = &self.narrowphase.pairs[pi as usize];
             if pair.manifolds.is_empty() {
                 continue;
             }
@@ -149,7 +150,7 @@ impl PhysicsWorld {
                     softness: Softness::RIGID,
                     first: self.constraint_points.len() as u32,
                     count: 0,
-                    pair: pi as u32,
+                    pair: pi,
                     manifold: mi as u32,
                     friction: FrictionPart::default(),
                     block: NormalBlock::default(),

@@ -10,7 +10,7 @@
 //! in the order it fills: the sweep follows the constraints' order within a few places.
 
 use super::body_state::BodyState;
-use super::contact_batch::{ContactBatch, LaneResult};
+use super::contact_batch::{ContactBatch, FaceBatch, LaneResult, PointBatch};
 use super::contact_constraint::{ConstraintPoint, ContactConstraint};
 use super::lanes::LANES;
 
@@ -55,9 +55,9 @@ impl OpenBatch {
 #[derive(Debug, Default)]
 pub(crate) struct ContactBatches {
     /// Manifolds laid out for four points (faces; two- and three-point manifolds too).
-    pub four: Vec<ContactBatch<4>>,
+    pub four: Vec<FaceBatch>,
     /// One-point manifolds (spheres, capsule ends, vertex contacts).
-    pub one: Vec<ContactBatch<1>>,
+    pub one: Vec<PointBatch>,
     /// Batches being filled, oldest first, per layout (one point, four points).
     open: [Vec<OpenBatch>; 2],
 }

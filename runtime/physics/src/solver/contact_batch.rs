@@ -5,35 +5,115 @@
 //! [`NormalBlock`](super::contact_constraint::NormalBlock) and
 //! [`FrictionPart`](super::contact_constraint::FrictionPart); here every branch is a lane
 //! select. The lanes of one batch never share a body they write ([`super::batching`]), so
-//! solving them together gives each manifold exactly what solving it alone would.
-//! `N` is the point count the batch is laid out for: 1 (spheres, capsule ends) or 4 (faces;
-//! manifolds of 2 or 3 points leave the rest inactive). An empty lane has zero masses and
-//! changes nothing.
+//! solving them together gives each manifold exactly what solving it alone would. An empty
+//! lane has zero masses and changes nothing.
+//!
+//! Two layouts ([`ManifoldRows`]): [`PointBatch`] for one-point manifolds (spheres, capsule
+//! ends), which carry only the point's rows and friction, and [`FaceBatch`] for manifolds of
+//! two to four points, which add the shared normal step and twist friction
+//! ([`FaceContact`]). The solver streams every batch once per pass, so a one-point batch
+//! does not carry what only faces use (a pile of 8,000 spheres is 30,000 manifolds).
 
 use glam::Vec3A;
 
 use super::body_state::BodyState;
-use super::contact_constraint::{ConstraintPoint, ContactConstraint, PAIR_SLOT};
+use super::contact_constraint::{ConstraintPoint, ContactConstraint};
+use super::face_contact::FaceContact;
 use super::lanes::{
     gather_deltas, gather_velocities, scatter_velocities, Velocities, F, LANES, V3,
 };
 
+/// Four one-point manifolds.
+pub(crate) type PointBatch = ContactBatch<1, PointContact>;
+/// Four manifolds of two to four points (unused points inactive).
+pub(crate) type FaceBatch = ContactBatch<4, FaceContact>;
+
 /// Lanes of one contact point slot.
 #[derive(Clone, Copy, Debug, Default)]
-struct PointLanes {
-    base_separation: F,
-    normal_impulse: F,
-    max_normal_impulse: F,
-    normal_mass: F,
-    inv_normal_mass: F,
-    relative_velocity: F,
-    twist_lever: F,
-    /// 1 where the lane's manifold has this point, else 0.
-    active: F,
-    rn_a: V3,
-    rn_b: V3,
-    irn_a: V3,
-    irn_b: V3,
+pub(crate) struct PointLanes {
+    pub base_separation: F,
+    pub normal_impulse: F,
+    pub max_normal_impulse: F,
+    pub normal_mass: F,
+    pub relative_velocity: F,
+    pub rn_a: V3,
+    pub rn_b: V3,
+    pub irn_a: V3,
+    pub irn_b: V3,
+}
+
+/// Each point's normal row in one pass: where it is speculative (separated: rigid, may not
+/// close the gap by more than it is) and its velocity bias.
+pub(crate) struct NormalRows<const N: usize> {
+    pub speculative: [F; N],
+    pub bias: [F; N],
+    /// Soft position correction on (solve phase) or off (relax phase).
+    pub use_bias: bool,
+}
+
+/// What a manifold layout adds to the rows every manifold has.
+pub(crate) trait ManifoldRows: Copy + std::fmt::Debug {
+    /// Lane values from up to four constraints (and their points).
+    fn pack(slots: &[Option<&ContactConstraint>; LANES], points: &[ConstraintPoint]) -> Self;
+    /// Adds its warm-start impulses' angular parts (`wa` is subtracted from body A).
+    fn warm_start(&self, wa: &mut V3, wb: &mut V3);
+    /// Before the per-point sweep: a step shared by all points.
+    fn solve_shared<const N: usize>(
+        &self,
+        points: &mut [PointLanes; N],
+        rows: &NormalRows<N>,
+        vn: &mut [F; N],
+        applied: &mut [F; N],
+    );
+    /// After point `j` took `imp`: how the later points' normal velocities change.
+    fn couple<const N: usize>(&self, j: usize, imp: F, vn: &mut [F; N]);
+    /// Friction about the normal, after the friction in the plane.
+    fn solve_twist<const N: usize>(
+        &mut self,
+        points: &[PointLanes; N],
+        friction: F,
+        normal: V3,
+        a: &mut Velocities,
+        b: &mut Velocities,
+    );
+    /// Accumulated twist impulse per lane.
+    fn twist_impulse(&self) -> F;
+}
+
+/// A one-point manifold: no shared step, no coupling, no lever for twist.
+#[derive(Clone, Copy, Debug, Default)]
+pub(crate) struct PointContact;
+
+impl ManifoldRows for PointContact {
+    fn pack(_: &[Option<&ContactConstraint>; LANES], _: &[ConstraintPoint]) -> Self {
+        Self
+    }
+    #[inline(always)]
+    fn warm_start(&self, _: &mut V3, _: &mut V3) {}
+    #[inline(always)]
+    fn solve_shared<const N: usize>(
+        &self,
+        _: &mut [PointLanes; N],
+        _: &NormalRows<N>,
+        _: &mut [F; N],
+        _: &mut [F; N],
+    ) {
+    }
+    #[inline(always)]
+    fn couple<const N: usize>(&self, _: usize, _: F, _: &mut [F; N]) {}
+    #[inline(always)]
+    fn solve_twist<const N: usize>(
+        &mut self,
+        _: &[PointLanes; N],
+        _: F,
+        _: V3,
+        _: &mut Velocities,
+        _: &mut Velocities,
+    ) {
+    }
+    fn twist_impulse(&self) -> F {
+        F::ZERO
+    }
 }
 
 /// The impulses one manifold ends the step with.
@@ -49,9 +129,9 @@ pub(crate) struct LaneResult {
     pub twist_impulse: f32,
 }
 
-/// Four manifolds of at most `N` points as lanes.
+/// Four manifolds of at most `N` points as lanes, with the rows of layout `M`.
 #[derive(Clone, Copy, Debug)]
-pub(crate) struct ContactBatch<const N: usize> {
+pub(crate) struct ContactBatch<const N: usize, M: ManifoldRows> {
     /// Index into the step's constraints per lane; `u32::MAX` for an empty lane.
     pub constraint: [u32; LANES],
     body_a: [u32; LANES],
@@ -66,47 +146,48 @@ pub(crate) struct ContactBatch<const N: usize> {
     bias_rate: F,
     mass_scale: F,
     impulse_scale: F,
-    /// `impulse_scale / mass_scale`: a soft row's compliance per unit `inv_normal_mass`.
-    soft_compliance: F,
     restitution: F,
     points: [PointLanes; N],
-    /// Lane mask: the shared normal step applies.
-    patch: F,
-    patch_k: F,
-    row_sum: [F; N],
-    coupling: [F; 6],
-    count: F,
-    inv_count: F,
     friction: F,
     tangent_impulse: [F; 2],
-    twist_impulse: F,
     tangent_mass: [F; 3],
     slide_mass: F,
-    twist_mass: F,
     rt_a: [V3; 2],
     rt_b: [V3; 2],
     irt_a: [V3; 2],
     irt_b: [V3; 2],
-    in_a: V3,
-    in_b: V3,
+    manifold: M,
 }
 
 /// Lane `l` gets `f(slots[l])`, 0 for an empty slot.
 #[inline(always)]
-fn lanes<T: Copy>(slots: &[Option<T>; LANES], f: impl Fn(T) -> f32) -> F {
+pub(crate) fn lanes<T: Copy>(slots: &[Option<T>; LANES], f: impl Fn(T) -> f32) -> F {
     F::new(std::array::from_fn(|l| slots[l].map_or(0.0, &f)))
 }
 
 /// Lane `l` gets `f(slots[l])`, zero for an empty slot.
 #[inline(always)]
-fn lanes3<T: Copy>(slots: &[Option<T>; LANES], f: impl Fn(T) -> Vec3A) -> V3 {
+pub(crate) fn lanes3<T: Copy>(slots: &[Option<T>; LANES], f: impl Fn(T) -> Vec3A) -> V3 {
     V3::from_lanes(std::array::from_fn(|l| slots[l].map_or(Vec3A::ZERO, &f)))
+}
+
+/// Point `k` of each lane's constraint, where it has one.
+#[inline(always)]
+pub(crate) fn point_slots<'a>(
+    slots: &[Option<&ContactConstraint>; LANES],
+    points: &'a [ConstraintPoint],
+    k: usize,
+) -> [Option<&'a ConstraintPoint>; LANES] {
+    slots.map(|c| {
+        c.filter(|c| k < usize::from(c.count))
+            .map(|c| &points[c.first as usize + k])
+    })
 }
 
 /// `max(floor, x)` per lane where only `x` may be NaN (then `floor`): SSE `maxps` returns its
 /// second operand when either is NaN.
 #[inline(always)]
-fn fmax(floor: F, x: F) -> F {
+pub(crate) fn fmax(floor: F, x: F) -> F {
     x.fast_max(floor)
 }
 
@@ -119,8 +200,8 @@ pub(crate) struct Pass {
     pub max_push: f32,
 }
 
-impl<const N: usize> ContactBatch<N> {
-    /// Packs up to four prepared constraints (`lanes`: indices into `constraints`, whose
+impl<const N: usize, M: ManifoldRows> ContactBatch<N, M> {
+    /// Packs up to four prepared constraints (`lanes_of`: indices into `constraints`, whose
     /// points are in `points`).
     pub(crate) fn pack(
         lanes_of: &[u32],
@@ -141,30 +222,20 @@ impl<const N: usize> ContactBatch<N> {
                 writes_b |= ((c.writes >> 1) & 1) << l;
             }
         }
-        let point_slots: [[Option<&ConstraintPoint>; LANES]; N] = std::array::from_fn(|k| {
-            slots.map(|c| {
-                c.filter(|c| k < usize::from(c.count))
-                    .map(|c| &points[c.first as usize + k])
-            })
-        });
         let one_point = |k: usize| {
-            let s = &point_slots[k];
+            let s = &point_slots(&slots, points, k);
             PointLanes {
                 base_separation: lanes(s, |p| p.base_separation),
                 normal_impulse: lanes(s, |p| p.normal_impulse),
                 max_normal_impulse: lanes(s, |p| p.max_normal_impulse),
                 normal_mass: lanes(s, |p| p.normal_mass),
-                inv_normal_mass: lanes(s, |p| p.inv_normal_mass),
                 relative_velocity: lanes(s, |p| p.relative_velocity),
-                twist_lever: lanes(s, |p| p.twist_lever),
-                active: lanes(s, |_| 1.0),
                 rn_a: lanes3(s, |p| p.rn_a),
                 rn_b: lanes3(s, |p| p.rn_b),
                 irn_a: lanes3(s, |p| p.irn_a),
                 irn_b: lanes3(s, |p| p.irn_b),
             }
         };
-        let count = lanes(&slots, |c| f32::from(c.count));
         Self {
             constraint,
             body_a,
@@ -181,49 +252,27 @@ impl<const N: usize> ContactBatch<N> {
             bias_rate: lanes(&slots, |c| c.softness.bias_rate),
             mass_scale: lanes(&slots, |c| c.softness.mass_scale),
             impulse_scale: lanes(&slots, |c| c.softness.impulse_scale),
-            soft_compliance: lanes(&slots, |c| {
-                if c.softness.mass_scale > 0.0 {
-                    c.softness.impulse_scale / c.softness.mass_scale
-                } else {
-                    0.0
-                }
-            }),
             restitution: lanes(&slots, |c| c.restitution),
             points: std::array::from_fn(one_point),
-            patch: lanes(&slots, |c| {
-                if c.block.patch {
-                    f32::from_bits(u32::MAX)
-                } else {
-                    0.0
-                }
-            }),
-            patch_k: lanes(&slots, |c| c.block.patch_k),
-            row_sum: std::array::from_fn(|k| lanes(&slots, |c| c.block.row_sum[k])),
-            coupling: std::array::from_fn(|k| lanes(&slots, |c| c.block.coupling[k])),
-            count,
-            inv_count: lanes(&slots, |c| 1.0 / f32::from(c.count.max(1))),
             friction: lanes(&slots, |c| c.friction.friction),
             tangent_impulse: [
                 lanes(&slots, |c| c.friction.tangent_impulse[0]),
                 lanes(&slots, |c| c.friction.tangent_impulse[1]),
             ],
-            twist_impulse: lanes(&slots, |c| c.friction.twist_impulse),
             tangent_mass: std::array::from_fn(|k| lanes(&slots, |c| c.friction.tangent_mass[k])),
             slide_mass: lanes(&slots, |c| c.friction.slide_mass),
-            twist_mass: lanes(&slots, |c| c.friction.twist_mass),
             rt_a: std::array::from_fn(|k| lanes3(&slots, |c| c.friction.rt_a[k])),
             rt_b: std::array::from_fn(|k| lanes3(&slots, |c| c.friction.rt_b[k])),
             irt_a: std::array::from_fn(|k| lanes3(&slots, |c| c.friction.irt_a[k])),
             irt_b: std::array::from_fn(|k| lanes3(&slots, |c| c.friction.irt_b[k])),
-            in_a: lanes3(&slots, |c| c.friction.in_a),
-            in_b: lanes3(&slots, |c| c.friction.in_b),
+            manifold: M::pack(&slots, points),
         }
     }
 
     /// Calls `f(constraint index, impulses)` for each lane in use.
     pub(crate) fn for_each_result(&self, mut f: impl FnMut(u32, &LaneResult)) {
         let ti = self.tangent_impulse.map(F::to_array);
-        let twist = self.twist_impulse.to_array();
+        let twist = self.manifold.twist_impulse().to_array();
         let ni = self.points.map(|p| p.normal_impulse.to_array());
         let max_ni = self.points.map(|p| p.max_normal_impulse.to_array());
         for (l, &ci) in self.constraint.iter().enumerate() {
@@ -248,10 +297,10 @@ impl<const N: usize> ContactBatch<N> {
         let mut a = gather_velocities(states, &self.body_a);
         let mut b = gather_velocities(states, &self.body_b);
         let [t1, t2] = self.tangent_impulse;
-        let tw = self.twist_impulse;
         let mut p = self.tangent[0].scale(t1) + self.tangent[1].scale(t2);
-        let mut wa = self.irt_a[0].scale(t1) + self.irt_a[1].scale(t2) + self.in_a.scale(tw);
-        let mut wb = self.irt_b[0].scale(t1) + self.irt_b[1].scale(t2) + self.in_b.scale(tw);
+        let mut wa = self.irt_a[0].scale(t1) + self.irt_a[1].scale(t2);
+        let mut wb = self.irt_b[0].scale(t1) + self.irt_b[1].scale(t2);
+        self.manifold.warm_start(&mut wa, &mut wb);
         for cp in &self.points {
             p += self.normal.scale(cp.normal_impulse);
             wa += cp.irn_a.scale(cp.normal_impulse);
@@ -276,51 +325,50 @@ impl<const N: usize> ContactBatch<N> {
         let zero = F::ZERO;
         let one = F::ONE;
         // Linearised current separation: base + n·(Δp_b − Δp_a) + Δθ_b·(r_b×n) − Δθ_a·(r_a×n);
-        // normal velocities all from the start-of-pass state (the block's coupling tracks
-        // them through the sweep).
+        // normal velocities all from the start-of-pass state (the coupling tracks them
+        // through the sweep).
         let dpn = (dp_b - dp_a).dot(n);
         let dvn = (b.v - a.v).dot(n);
         let inv_h = F::splat(pass.inv_h);
         let neg_max_push = F::splat(-pass.max_push);
         let mut vn = [zero; N];
-        // Each point's row: bias, mass scale, impulse scale, and compliance in the shared step.
-        let mut bias = [zero; N];
+        let mut rows = NormalRows {
+            speculative: [zero; N],
+            bias: [zero; N],
+            use_bias: pass.use_bias,
+        };
         let mut mass_scale = [one; N];
         let mut impulse_scale = [zero; N];
-        let mut compliance = [zero; N];
         for k in 0..N {
             let cp = &self.points[k];
             let sep = cp.base_separation + dpn + dtheta_b.dot(cp.rn_b) - dtheta_a.dot(cp.rn_a);
             vn[k] = dvn + b.w.dot(cp.rn_b) - a.w.dot(cp.rn_a);
             let speculative = sep.simd_gt(zero);
+            rows.speculative[k] = speculative;
             if pass.use_bias {
                 // No dead zone (as in Box2D v3 and rapier): a resting contact settles at the
                 // soft spring's static deflection.
                 let soft = fmax(neg_max_push, self.bias_rate * sep);
-                bias[k] = speculative.select(sep * inv_h, soft);
+                rows.bias[k] = speculative.select(sep * inv_h, soft);
                 mass_scale[k] = speculative.select(one, self.mass_scale);
                 impulse_scale[k] = speculative.select(zero, self.impulse_scale);
-                compliance[k] = speculative.select(zero, self.soft_compliance * cp.inv_normal_mass);
             } else {
-                bias[k] = speculative.select(sep * inv_h, zero);
+                rows.bias[k] = speculative.select(sep * inv_h, zero);
             }
         }
         let mut applied = [zero; N];
-        if N > 1 && self.patch.any() {
-            self.solve_patch(&bias, &compliance, &mut vn, &mut applied);
-        }
+        self.manifold
+            .solve_shared(&mut self.points, &rows, &mut vn, &mut applied);
         for j in 0..N {
             let cp = &mut self.points[j];
-            let imp = -cp.normal_mass * mass_scale[j] * (vn[j] + bias[j])
+            let imp = -cp.normal_mass * mass_scale[j] * (vn[j] + rows.bias[j])
                 - impulse_scale[j] * cp.normal_impulse;
             let new = fmax(zero, cp.normal_impulse + imp);
             let imp = new - cp.normal_impulse;
             cp.normal_impulse = new;
             cp.max_normal_impulse = fmax(cp.max_normal_impulse, imp);
             applied[j] += imp;
-            for i in j + 1..N {
-                vn[i] += self.coupling[PAIR_SLOT[j][i]] * imp;
-            }
+            self.manifold.couple(j, imp, &mut vn);
         }
         let mut total = zero;
         let (mut da, mut db) = (V3::ZERO, V3::ZERO);
@@ -339,61 +387,13 @@ impl<const N: usize> ContactBatch<N> {
         scatter_velocities(states, &self.body_b, self.writes_b, b);
     }
 
-    /// One step of all the manifold's points together (the mean of their rows: one impulse at the
-    /// patch centre, shared equally), before the per-point Gauss–Seidel pass.
-    ///
-    /// Points solved one after another are biased: the first one stops the whole approach on its
-    /// own corner and tips the body, the others only partly undo it. A perfectly symmetric stack of
-    /// boxes thus left its first step spinning (0.01–0.02 rad/s for three boxes), and a stack of
-    /// frictionless boxes, which soft contacts cannot hold against a sideways offset (a box off
-    /// centre tilts its support, then slides down it), was seeded to collapse within ~35 s. The
-    /// shared step removes the common approach without torque, so the per-point pass only fixes
-    /// the differences. It drives the mean of the per-point residuals (soft:
-    /// `vn + bias + impulse_scale·λ / (mass_scale·m)`; speculative: `vn + s/h`) to zero, so it has
-    /// the fixed point of the per-point rows and never works against them. Speculative rows take
-    /// part too: a box landing flat on the ground meets it with all four points speculative, and
-    /// solved one by one they tipped it and threw it sideways (a dropped five-box stack drifted
-    /// 2 cm; now 2 mm).
-    #[inline(always)]
-    fn solve_patch(
-        &mut self,
-        bias: &[F; N],
-        compliance: &[F; N],
-        vn: &mut [F; N],
-        applied: &mut [F; N],
-    ) {
-        let (mut residual, mut total_compliance) = (F::ZERO, F::ZERO);
-        let mut min_impulse = F::splat(f32::MAX);
-        for k in 0..N {
-            let cp = &self.points[k];
-            let active = cp.active.simd_gt(F::ZERO);
-            residual += cp.active * (vn[k] + bias[k] + compliance[k] * cp.normal_impulse);
-            total_compliance += compliance[k];
-            min_impulse = active.select(cp.normal_impulse.fast_min(min_impulse), min_impulse);
-        }
-        let inv = self.inv_count;
-        let k = self.patch_k + total_compliance * inv * inv;
-        // No point's accumulated impulse may go below zero.
-        let total = fmax(-self.count * min_impulse, -(residual * inv) / k);
-        let each = self.patch.select(total * inv, F::ZERO);
-        for k in 0..N {
-            let cp = &mut self.points[k];
-            let mine = each * cp.active;
-            cp.normal_impulse += mine;
-            cp.max_normal_impulse = fmax(cp.max_normal_impulse, mine);
-            applied[k] += mine;
-            vn[k] += mine * self.row_sum[k];
-        }
-    }
-
     /// Coulomb friction in the contact plane (exact 2×2 mass while sticking, isotropic while
-    /// sliding) and twist friction about the normal, at the manifold centre.
+    /// sliding), then the layout's twist friction, at the manifold centre.
     #[inline(always)]
     fn solve_friction(&mut self, a: &mut Velocities, b: &mut Velocities) {
-        let (mut total, mut twist_limit) = (F::ZERO, F::ZERO);
+        let mut total = F::ZERO;
         for cp in &self.points {
             total += cp.normal_impulse;
-            twist_limit += cp.normal_impulse * cp.twist_lever;
         }
         let max_f = self.friction * total;
         let max_f2 = max_f * max_f;
@@ -419,16 +419,8 @@ impl<const N: usize> ContactBatch<N> {
         a.w -= self.irt_a[0].scale(d1) + self.irt_a[1].scale(d2);
         b.v += self.inv_mass_b * p;
         b.w += self.irt_b[0].scale(d1) + self.irt_b[1].scale(d2);
-        // Twist about the normal (a single point has no lever, so no impulse).
-        let limit = self.friction * twist_limit;
-        let wt = (b.w - a.w).dot(self.normal);
-        let l = (self.twist_impulse - self.twist_mass * wt)
-            .fast_max(-limit)
-            .fast_min(limit);
-        let d = l - self.twist_impulse;
-        self.twist_impulse = l;
-        a.w -= self.in_a.scale(d);
-        b.w += self.in_b.scale(d);
+        self.manifold
+            .solve_twist(&self.points, self.friction, self.normal, a, b);
     }
 
     /// After substepping: points that approached faster than `threshold` and carried load

@@ -4,6 +4,7 @@ pub(crate) mod batching;
 pub(crate) mod body_state;
 pub(crate) mod contact_batch;
 pub(crate) mod contact_constraint;
+pub(crate) mod face_contact;
 pub(crate) mod lanes;
 pub mod softness;
 pub(crate) mod solve;

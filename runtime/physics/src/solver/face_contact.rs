@@ -1,0 +1,170 @@
+//! [`FaceContact`]: what a manifold of two to four points adds to the rows of a
+//! [`ContactBatch`](super::contact_batch::ContactBatch): the shared normal step over its
+//! points, the coupling between its points' normal rows, and twist friction about the normal.
+
+use super::contact_batch::{
+    fmax, lanes, lanes3, point_slots, ManifoldRows, NormalRows, PointLanes,
+};
+use super::contact_constraint::{ConstraintPoint, ContactConstraint, PAIR_SLOT};
+use super::lanes::{Velocities, F, LANES, V3};
+
+/// The multi-point rows of four manifolds, one per lane (see
+/// [`NormalBlock`](super::contact_constraint::NormalBlock)).
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct FaceContact {
+    /// `impulse_scale / mass_scale`: a soft row's compliance per unit `inv_normal_mass`.
+    soft_compliance: F,
+    /// Lane mask: the shared normal step applies.
+    patch: F,
+    patch_k: F,
+    row_sum: [F; 4],
+    coupling: [F; 6],
+    count: F,
+    inv_count: F,
+    /// Per point: `J M⁻¹ Jᵀ` of its normal row, its distance from the manifold centre in the
+    /// contact plane (twist lever), and 1 where the lane's manifold has the point, else 0.
+    inv_normal_mass: [F; 4],
+    twist_lever: [F; 4],
+    active: [F; 4],
+    twist_impulse: F,
+    twist_mass: F,
+    /// World inverse inertia times the normal, for A and B.
+    in_a: V3,
+    in_b: V3,
+}
+
+impl ManifoldRows for FaceContact {
+    fn pack(slots: &[Option<&ContactConstraint>; LANES], points: &[ConstraintPoint]) -> Self {
+        let per_point = |f: fn(&ConstraintPoint) -> f32| {
+            std::array::from_fn(|k| lanes(&point_slots(slots, points, k), f))
+        };
+        Self {
+            soft_compliance: lanes(slots, |c| {
+                if c.softness.mass_scale > 0.0 {
+                    c.softness.impulse_scale / c.softness.mass_scale
+                } else {
+                    0.0
+                }
+            }),
+            patch: lanes(slots, |c| {
+                if c.block.patch {
+                    f32::from_bits(u32::MAX)
+                } else {
+                    0.0
+                }
+            }),
+            patch_k: lanes(slots, |c| c.block.patch_k),
+            row_sum: std::array::from_fn(|k| lanes(slots, |c| c.block.row_sum[k])),
+            coupling: std::array::from_fn(|k| lanes(slots, |c| c.block.coupling[k])),
+            count: lanes(slots, |c| f32::from(c.count)),
+            inv_count: lanes(slots, |c| 1.0 / f32::from(c.count.max(1))),
+            inv_normal_mass: per_point(|p| p.inv_normal_mass),
+            twist_lever: per_point(|p| p.twist_lever),
+            active: per_point(|_| 1.0),
+            twist_impulse: lanes(slots, |c| c.friction.twist_impulse),
+            twist_mass: lanes(slots, |c| c.friction.twist_mass),
+            in_a: lanes3(slots, |c| c.friction.in_a),
+            in_b: lanes3(slots, |c| c.friction.in_b),
+        }
+    }
+
+    #[inline(always)]
+    fn warm_start(&self, wa: &mut V3, wb: &mut V3) {
+        *wa += self.in_a.scale(self.twist_impulse);
+        *wb += self.in_b.scale(self.twist_impulse);
+    }
+
+    /// One step of all the manifold's points together (the mean of their rows: one impulse at the
+    /// patch centre, shared equally), before the per-point Gauss–Seidel pass.
+    ///
+    /// Points solved one after another are biased: the first one stops the whole approach on its
+    /// own corner and tips the body, the others only partly undo it. A perfectly symmetric stack of
+    /// boxes thus left its first step spinning (0.01–0.02 rad/s for three boxes), and a stack of
+    /// frictionless boxes, which soft contacts cannot hold against a sideways offset (a box off
+    /// centre tilts its support, then slides down it), was seeded to collapse within ~35 s. The
+    /// shared step removes the common approach without torque, so the per-point pass only fixes
+    /// the differences. It drives the mean of the per-point residuals (soft:
+    /// `vn + bias + impulse_scale·λ / (mass_scale·m)`; speculative: `vn + s/h`) to zero, so it has
+    /// the fixed point of the per-point rows and never works against them. Speculative rows take
+    /// part too: a box landing flat on the ground meets it with all four points speculative, and
+    /// solved one by one they tipped it and threw it sideways (a dropped five-box stack drifted
+    /// 2 cm; now 2 mm).
+    #[inline(always)]
+    fn solve_shared<const N: usize>(
+        &self,
+        points: &mut [PointLanes; N],
+        rows: &NormalRows<N>,
+        vn: &mut [F; N],
+        applied: &mut [F; N],
+    ) {
+        if !self.patch.any() {
+            return;
+        }
+        let (mut residual, mut total_compliance) = (F::ZERO, F::ZERO);
+        let mut min_impulse = F::splat(f32::MAX);
+        for k in 0..N {
+            let cp = &points[k];
+            // The row each point has in the per-point pass: speculative (rigid) or soft,
+            // whose compliance is `impulse_scale / (mass_scale · m)` beyond the mechanical part.
+            let compliance = if rows.use_bias {
+                rows.speculative[k].select(F::ZERO, self.soft_compliance * self.inv_normal_mass[k])
+            } else {
+                F::ZERO
+            };
+            let active = self.active[k].simd_gt(F::ZERO);
+            residual += self.active[k] * (vn[k] + rows.bias[k] + compliance * cp.normal_impulse);
+            total_compliance += compliance;
+            min_impulse = active.select(cp.normal_impulse.fast_min(min_impulse), min_impulse);
+        }
+        let inv = self.inv_count;
+        // The mean residual moves by `k` per unit of total impulse shared equally.
+        let k = self.patch_k + total_compliance * inv * inv;
+        // No point's accumulated impulse may go below zero.
+        let total = fmax(-self.count * min_impulse, -(residual * inv) / k);
+        let each = self.patch.select(total * inv, F::ZERO);
+        for k in 0..N {
+            let cp = &mut points[k];
+            let mine = each * self.active[k];
+            cp.normal_impulse += mine;
+            cp.max_normal_impulse = fmax(cp.max_normal_impulse, mine);
+            applied[k] += mine;
+            vn[k] += mine * self.row_sum[k];
+        }
+    }
+
+    #[inline(always)]
+    fn couple<const N: usize>(&self, j: usize, imp: F, vn: &mut [F; N]) {
+        for (i, v) in vn.iter_mut().enumerate().skip(j + 1) {
+            *v += self.coupling[PAIR_SLOT[j][i]] * imp;
+        }
+    }
+
+    /// Twist friction bounded by `μ Σ λₙ·lever` (rapier's "twist friction").
+    #[inline(always)]
+    fn solve_twist<const N: usize>(
+        &mut self,
+        points: &[PointLanes; N],
+        friction: F,
+        normal: V3,
+        a: &mut Velocities,
+        b: &mut Velocities,
+    ) {
+        let mut twist_limit = F::ZERO;
+        for (cp, lever) in points.iter().zip(&self.twist_lever) {
+            twist_limit += cp.normal_impulse * *lever;
+        }
+        let limit = friction * twist_limit;
+        let wt = (b.w - a.w).dot(normal);
+        let l = (self.twist_impulse - self.twist_mass * wt)
+            .fast_max(-limit)
+            .fast_min(limit);
+        let d = l - self.twist_impulse;
+        self.twist_impulse = l;
+        a.w -= self.in_a.scale(d);
+        b.w += self.in_b.scale(d);
+    }
+
+    fn twist_impulse(&self) -> F {
+        self.twist_impulse
+    }
+}
