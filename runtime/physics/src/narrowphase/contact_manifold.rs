@@ -1,8 +1,10 @@
 //! [`ContactManifold`]: up to four contact points sharing a normal.
 
+use arrayvec::ArrayVec;
 use glam::Vec3;
 
 use super::contact_point::ContactPoint;
+use super::raw_manifold::MAX_MANIFOLD_POINTS;
 
 /// Contact points of one feature pair with a shared normal (from A to B).
 #[derive(Clone, Debug, PartialEq, Default)]
@@ -11,8 +13,9 @@ pub struct ContactManifold {
     pub normal: Vec3,
     /// Normal in body A's frame.
     pub local_normal: Vec3,
-    /// Points (at most 4).
-    pub points: Vec<ContactPoint>,
+    /// Points, stored inline: the solver reads every manifold's points each step, and a
+    /// separate allocation per manifold cost a cache miss each time.
+    pub points: ArrayVec<ContactPoint, MAX_MANIFOLD_POINTS>,
     /// First friction direction (world), fixed for the step.
     pub(crate) tangent1: Vec3,
 }

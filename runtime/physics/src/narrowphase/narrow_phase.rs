@@ -354,7 +354,10 @@ impl NarrowPhase {
                         cp.tangent_impulse = self.old[k].tangent_impulse;
                         cp.twist_impulse = self.old[k].twist_impulse;
                     }
-                    m.points.push(cp);
+                    // Raw manifolds are reduced to the same maximum.
+                    if m.points.try_push(cp).is_err() {
+                        break;
+                    }
                 }
             }
             pair.min_separation = min_sep;

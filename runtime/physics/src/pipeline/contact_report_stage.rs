@@ -3,10 +3,9 @@
 
 use glam::Vec3;
 
-use crate::body_type::BodyType;
 use crate::contact_event::ContactEventKind;
 use crate::narrowphase::narrow_phase::make_event;
-use crate::physics_world::PhysicsWorld;
+use crate::physics_world::{PhysicsWorld, SolverSlot};
 
 impl PhysicsWorld {
     /// Touch transitions of the pairs regenerated this step (after the solve, so that an
@@ -72,13 +71,15 @@ impl PhysicsWorld {
             for m in &p.manifolds {
                 let sep = m.min_separation();
                 for (h, n) in [(p.body_a, -m.normal), (p.body_b, m.normal)] {
-                    let Some(b) = self.bodies.get(h) else {
+                    // The compact solver slot, not the body: one cache line for many bodies.
+                    let Some(&SolverSlot {
+                        index,
+                        dynamic: true,
+                    }) = self.solver_slots.get(h.index() as usize)
+                    else {
                         continue;
                     };
-                    if b.body_type != BodyType::Dynamic || b.solver_index == 0 {
-                        continue;
-                    }
-                    let slot = &mut deepest[b.solver_index as usize];
+                    let slot = &mut deepest[index as usize];
                     // Grounded by any supporting contact (a box under a stack touches the
                     // box above more deeply than the ground).
                     slot.2 |= n.y >= min_y;
