@@ -27,6 +27,9 @@ pub struct BroadPhase {
     pub(crate) tree: DynamicTree,
     moved: Vec<u32>,
     moved_flag: Vec<bool>,
+    /// The proxies the last pair search was for, and the same as flags by proxy id.
+    searched: Vec<u32>,
+    searched_flag: Vec<bool>,
 }
 
 impl BroadPhase {
@@ -94,10 +97,31 @@ impl BroadPhase {
                 true
             });
         }
+        for &p in &self.searched {
+            self.searched_flag[p as usize] = false;
+        }
         for &p in &self.moved {
             self.moved_flag[p as usize] = false;
+            let i = p as usize;
+            if self.searched_flag.len() <= i {
+                self.searched_flag.resize(i + 1, false);
+            }
+            self.searched_flag[i] = true;
         }
+        std::mem::swap(&mut self.searched, &mut self.moved);
         self.moved.clear();
+    }
+
+    /// Whether the proxy's fat box changed before the last pair search (it moved out of its
+    /// fat box, or is new). Two proxies that overlapped when their pair was found and did
+    /// not change since still overlap: the narrowphase tests pairs only when this is true
+    /// for one of them.
+    #[must_use]
+    pub fn moved_before_last_search(&self, proxy: u32) -> bool {
+        self.searched_flag
+            .get(proxy as usize)
+            .copied()
+            .unwrap_or(false)
     }
 
     /// Fat box of a proxy.

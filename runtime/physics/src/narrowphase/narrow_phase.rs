@@ -234,7 +234,12 @@ impl NarrowPhase {
                 i += 1;
                 continue;
             }
-            if !bp.fat_aabb(ca.proxy).intersects(&bp.fat_aabb(cb.proxy)) {
+            // Fat boxes change only when a proxy moves out of its own: unchanged boxes still
+            // overlap (a pair skipped while both bodies slept keeps a stale overlap until a
+            // proxy moves again; its contacts come from the shapes, so nothing is wrong).
+            let recheck =
+                bp.moved_before_last_search(ca.proxy) || bp.moved_before_last_search(cb.proxy);
+            if recheck && !bp.fat_aabb(ca.proxy).intersects(&bp.fat_aabb(cb.proxy)) {
                 let p = self.remove_at(i);
                 if p.touching {
                     events.push(make_event(ContactEventKind::Ended, &p, bodies, 0.0));
