@@ -20,7 +20,7 @@ use crate::physics_settings::PhysicsSettings;
 use crate::rigid_body::RigidBody;
 use crate::rigid_body_desc::RigidBodyDesc;
 use crate::solver::body_state::BodyState;
-use crate::solver::contact_constraint::ContactConstraint;
+use crate::solver::contact_constraint::ManifoldRef;
 use crate::solver::solver_body::SolverBody;
 use crate::step_output::StepOutput;
 
@@ -42,8 +42,8 @@ pub struct PhysicsWorld {
     pub(crate) solver_states: Vec<BodyState>,
     /// Body slot index of each solver body (entry 0 unused).
     pub(crate) solver_handles: Vec<u32>,
-    pub(crate) constraints: Vec<ContactConstraint>,
-    pub(crate) constraint_points: Vec<crate::solver::contact_constraint::ConstraintPoint>,
+    /// The manifolds the solver takes this step, in order.
+    pub(crate) manifold_refs: Vec<ManifoldRef>,
     /// Solver index and dynamic flag by body arena index (see [`SolverSlot`]).
     pub(crate) solver_slots: Vec<SolverSlot>,
     /// The constraints as SIMD batches for the substeps.
@@ -102,8 +102,7 @@ impl PhysicsWorld {
             solver_bodies: Vec::new(),
             solver_states: Vec::new(),
             solver_handles: Vec::new(),
-            constraints: Vec::new(),
-            constraint_points: Vec::new(),
+            manifold_refs: Vec::new(),
             solver_slots: Vec::new(),
             contact_batches: Default::default(),
             new_pairs: Vec::new(),

@@ -23,7 +23,7 @@ impl PhysicsWorld {
             return;
         }
         let mut parent: Vec<u32> = (0..n as u32).collect();
-        for c in &self.constraints {
+        for c in &self.manifold_refs {
             let (a, b) = (c.body_a, c.body_b);
             if a == 0 || b == 0 {
                 continue;

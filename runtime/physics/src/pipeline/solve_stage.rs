@@ -9,7 +9,8 @@ use crate::physics_world::SolverSlot;
 use crate::rigid_body::mask_mat;
 use crate::solver::body_state::BodyState;
 use crate::solver::contact_constraint::{
-    prepare, ConstraintPoint, ContactConstraint, FrictionPart, NormalBlock,
+    prepare, ConstraintPoint, ContactConstraint, FrictionPart, ManifoldRef, NormalBlock,
+    PreparedManifold,
 };
 use crate::solver::solve::{solve_substeps, SolveParams};
 use crate::solver::solver_body::SolverBody;
@@ -108,12 +109,12 @@ impl PhysicsWorld {
         }
         self.output.counters.awake_bodies = (self.solver_bodies.len() - 1) as u32;
 
-        // Constraints.
+        // Manifolds: which the solver takes and which bodies they write; each is prepared
+        // when its batch is packed.
         let hertz = s.contact_hertz.min(0.25 / h);
         let max_hertz = Softness::max_load_hertz(h, s.dt);
         let g_h = s.gravity.length() * h;
-        self.constraints.clear();
-        self.constraint_points.clear();
+        self.manifold_refs.clear();
         let mut contacts = 0u32;
         for &pi in &self.narrowphase.updated_pairs {
             let pair = &self.narrowphase.pairs[pi as usize];
@@ -128,75 +129,88 @@ impl PhysicsWorld {
                     .unwrap_or(SolverSlot::NONE)
             };
             let (sa, sb) = (slot(pair.body_a), slot(pair.body_b));
-            let (ia, ib) = (sa.index, sb.index);
-            let (a_dyn, b_dyn) = (sa.dynamic, sb.dynamic);
-            if !a_dyn && !b_dyn {
+            if !sa.dynamic && !sb.dynamic {
                 continue;
             }
             for (mi, m) in pair.manifolds.iter().enumerate() {
                 if m.points.is_empty() {
                     continue;
                 }
-                let n = m.normal;
-                let t1 = m.tangent1;
-                let t2 = n.cross(t1);
-                let mut c = ContactConstraint {
-                    body_a: ia,
-                    body_b: ib,
-                    writes: u8::from(a_dyn) | u8::from(b_dyn) << 1,
-                    normal: n.into(),
-                    tangent: [t1.into(), t2.into()],
-                    restitution: pair.restitution,
-                    softness: Softness::RIGID,
-                    first: self.constraint_points.len() as u32,
-                    count: 0,
+                let count = m.points.len().min(4) as u8;
+                contacts += u32::from(count);
+                self.manifold_refs.push(ManifoldRef {
                     pair: pi,
                     manifold: mi as u32,
-                    friction: FrictionPart::default(),
-                    block: NormalBlock::default(),
-                };
-                let mut anchors = [(Vec3A::ZERO, Vec3A::ZERO); 4];
-                let (mut tangent, mut twist) = (Vec3::ZERO, 0.0f32);
-                for (k, p) in m.points.iter().take(4).enumerate() {
-                    anchors[k] = (p.anchor_a.into(), p.anchor_b.into());
-                    tangent += p.tangent_impulse;
-                    twist += p.twist_impulse;
-                    self.constraint_points.push(ConstraintPoint {
-                        base_separation: p.separation,
-                        normal_impulse: p.normal_impulse,
-                        ..ConstraintPoint::default()
-                    });
-                    c.count += 1;
-                }
-                c.friction.tangent_impulse = [tangent.dot(t1), tangent.dot(t2)];
-                c.friction.twist_impulse = twist;
-                contacts += u32::from(c.count);
-                let first = c.first as usize;
-                let count = c.count as usize;
-                prepare(
-                    &mut c,
-                    &mut self.constraint_points[first..],
-                    &anchors[..count],
-                    &self.solver_bodies,
-                    &self.solver_states,
-                    pair.static_friction,
-                    pair.dynamic_friction,
-                    s.static_friction_speed,
-                );
-                // Static contacts are twice as stiff (Box2D v3); both stiffen with load.
-                let base_hz = if a_dyn && b_dyn { hertz } else { 2.0 * hertz };
-                let pts = &self.constraint_points[first..first + c.count as usize];
-                let (load, own) = pts.iter().fold((0.0f32, 0.0f32), |(p, m), cp| {
-                    (p + cp.normal_impulse, m + cp.normal_mass * g_h)
+                    body_a: sa.index,
+                    body_b: sb.index,
+                    writes: u8::from(sa.dynamic) | u8::from(sb.dynamic) << 1,
+                    count,
                 });
-                let ratio = if own > 0.0 { load / own } else { 1.0 };
-                c.softness =
-                    Softness::for_load(base_hz, ratio, max_hertz, s.contact_damping_ratio, h);
-                self.constraints.push(c);
             }
         }
-        self.output.counters.manifolds = self.constraints.len() as u32;
+        self.output.counters.manifolds = self.manifold_refs.len() as u32;
         self.output.counters.contacts = contacts;
+
+        let (pairs, bodies, states) = (
+            &self.narrowphase.pairs,
+            &self.solver_bodies,
+            &self.solver_states,
+        );
+        let prepare_one = |r: &ManifoldRef| {
+            let pair = &pairs[r.pair as usize];
+            let m = &pair.manifolds[r.manifold as usize];
+            let n = m.normal;
+            let t1 = m.tangent1;
+            let t2 = n.cross(t1);
+            let mut c = ContactConstraint {
+                body_a: r.body_a,
+                body_b: r.body_b,
+                writes: r.writes,
+                normal: n.into(),
+                tangent: [t1.into(), t2.into()],
+                restitution: pair.restitution,
+                softness: Softness::RIGID,
+                count: r.count,
+                friction: FrictionPart::default(),
+                block: NormalBlock::default(),
+            };
+            let mut points = [ConstraintPoint::default(); 4];
+            let mut anchors = [(Vec3A::ZERO, Vec3A::ZERO); 4];
+            let (mut tangent, mut twist) = (Vec3::ZERO, 0.0f32);
+            let count = usize::from(r.count);
+            for (k, p) in m.points.iter().take(count).enumerate() {
+                anchors[k] = (p.anchor_a.into(), p.anchor_b.into());
+                tangent += p.tangent_impulse;
+                twist += p.twist_impulse;
+                points[k].base_separation = p.separation;
+                points[k].normal_impulse = p.normal_impulse;
+            }
+            c.friction.tangent_impulse = [tangent.dot(t1), tangent.dot(t2)];
+            c.friction.twist_impulse = twist;
+            prepare(
+                &mut c,
+                &mut points[..count],
+                &anchors[..count],
+                bodies,
+                states,
+                pair.static_friction,
+                pair.dynamic_friction,
+                s.static_friction_speed,
+            );
+            // Static contacts are twice as stiff (Box2D v3); both stiffen with load.
+            let base_hz = if r.writes == 3 { hertz } else { 2.0 * hertz };
+            let (load, own) = points[..count].iter().fold((0.0f32, 0.0f32), |(p, m), cp| {
+                (p + cp.normal_impulse, m + cp.normal_mass * g_h)
+            });
+            let ratio = if own > 0.0 { load / own } else { 1.0 };
+            c.softness = Softness::for_load(base_hz, ratio, max_hertz, s.contact_damping_ratio, h);
+            PreparedManifold {
+                constraint: c,
+                points,
+            }
+        };
+        self.contact_batches
+            .build(&self.manifold_refs, states, prepare_one);
 
         let params = SolveParams {
             dt: s.dt,
@@ -208,11 +222,6 @@ impl PhysicsWorld {
             max_linear_speed: s.max_linear_speed,
             max_angular_speed: s.max_angular_speed,
         };
-        self.contact_batches.build(
-            &self.constraints,
-            &self.constraint_points,
-            &self.solver_states,
-        );
         solve_substeps(
             &mut self.solver_bodies,
             &mut self.solver_states,
@@ -222,15 +231,15 @@ impl PhysicsWorld {
 
         // Store impulses for warm starting and events; a manifold's friction is shared among
         // its points in proportion to their normal impulses.
-        let (constraints, pairs) = (&self.constraints, &mut self.narrowphase.pairs);
-        self.contact_batches.for_each_result(|ci, result| {
-            let c = &constraints[ci as usize];
+        let (refs, pairs) = (&self.manifold_refs, &mut self.narrowphase.pairs);
+        self.contact_batches.for_each_result(|ri, result| {
+            let c = &refs[ri as usize];
             let pair = &mut pairs[c.pair as usize];
             let m = &mut pair.manifolds[c.manifold as usize];
             let count = usize::from(c.count);
             let normal = &result.normal_impulse[..count];
             let [t1, t2] = result.tangent_impulse;
-            let tangent = Vec3::from(c.tangent[0] * t1 + c.tangent[1] * t2);
+            let tangent = Vec3::from(result.tangent[0] * t1 + result.tangent[1] * t2);
             let total: f32 = normal.iter().sum();
             for (k, p) in m.points.iter_mut().take(count).enumerate() {
                 let share = if total > 0.0 {

@@ -10,8 +10,8 @@
 //! in the order it fills: the sweep follows the constraints' order within a few places.
 
 use super::body_state::BodyState;
-use super::contact_batch::{ContactBatch, FaceBatch, LaneResult, PointBatch};
-use super::contact_constraint::{ConstraintPoint, ContactConstraint};
+use super::contact_batch::{FaceBatch, LaneResult, PointBatch};
+use super::contact_constraint::{ManifoldRef, PreparedManifold};
 use super::lanes::LANES;
 
 /// Batches being filled at once, per layout. More finds a free lane more often (fuller
@@ -63,36 +63,37 @@ pub(crate) struct ContactBatches {
 }
 
 impl ContactBatches {
-    /// Deals `constraints` into batches and packs them. Deterministic: it depends only on
-    /// the constraints and their order.
+    /// Deals `manifolds` into batches, preparing each one (`prepare`) as its batch is
+    /// packed. Deterministic: it depends only on the manifolds and their order. Lanes report
+    /// their index in `manifolds`.
     pub(crate) fn build(
         &mut self,
-        constraints: &[ContactConstraint],
-        points: &[ConstraintPoint],
+        manifolds: &[ManifoldRef],
         states: &[BodyState],
+        mut prepare: impl FnMut(&ManifoldRef) -> PreparedManifold,
     ) {
         self.four.clear();
         self.one.clear();
-        for (ci, c) in constraints.iter().enumerate() {
-            let layout = usize::from(c.count > 1);
+        for (i, r) in manifolds.iter().enumerate() {
+            let layout = usize::from(r.count > 1);
             let mut bodies = [0u32; 2];
             let mut n = 0;
-            if c.writes & 1 != 0 {
-                bodies[n] = c.body_a;
+            if r.writes & 1 != 0 {
+                bodies[n] = r.body_a;
                 n += 1;
             }
-            if c.writes & 2 != 0 {
-                bodies[n] = c.body_b;
+            if r.writes & 2 != 0 {
+                bodies[n] = r.body_b;
                 n += 1;
             }
             let bodies = &bodies[..n];
             let open = &mut self.open[layout];
             let slot = match open.iter().position(|b| !b.writes_any(bodies)) {
-                Some(i) => i,
+                Some(slot) => slot,
                 None => {
                     if open.len() == OPEN_BATCHES {
                         let oldest = open.remove(0);
-                        self.emit(layout, &oldest, constraints, points, states);
+                        self.emit(layout, &oldest, manifolds, states, &mut prepare);
                     }
                     let open = &mut self.open[layout];
                     open.push(OpenBatch::EMPTY);
@@ -100,16 +101,16 @@ impl ContactBatches {
                 }
             };
             let open = &mut self.open[layout];
-            open[slot].push(ci as u32, bodies);
+            open[slot].push(i as u32, bodies);
             if open[slot].len == LANES {
                 let full = open.remove(slot);
-                self.emit(layout, &full, constraints, points, states);
+                self.emit(layout, &full, manifolds, states, &mut prepare);
             }
         }
         for layout in 0..2 {
             let open = std::mem::take(&mut self.open[layout]);
             for b in &open {
-                self.emit(layout, b, constraints, points, states);
+                self.emit(layout, b, manifolds, states, &mut prepare);
             }
             self.open[layout] = open;
             self.open[layout].clear();
@@ -120,21 +121,29 @@ impl ContactBatches {
         &mut self,
         layout: usize,
         batch: &OpenBatch,
-        constraints: &[ContactConstraint],
-        points: &[ConstraintPoint],
+        manifolds: &[ManifoldRef],
         states: &[BodyState],
+        prepare: &mut impl FnMut(&ManifoldRef) -> PreparedManifold,
     ) {
         let lanes = &batch.lanes[..batch.len];
         if layout == 1 {
-            self.four
-                .push(ContactBatch::pack(lanes, constraints, points, states));
+            self.four.push(FaceBatch::EMPTY);
+            if let Some(b) = self.four.last_mut() {
+                for (l, &id) in lanes.iter().enumerate() {
+                    b.set_lane(l, id, &prepare(&manifolds[id as usize]), states);
+                }
+            }
         } else {
-            self.one
-                .push(ContactBatch::pack(lanes, constraints, points, states));
+            self.one.push(PointBatch::EMPTY);
+            if let Some(b) = self.one.last_mut() {
+                for (l, &id) in lanes.iter().enumerate() {
+                    b.set_lane(l, id, &prepare(&manifolds[id as usize]), states);
+                }
+            }
         }
     }
 
-    /// Calls `f(constraint index, impulses)` for every constraint, batch by batch.
+    /// Calls `f(manifold index, impulses)` for every manifold, batch by batch.
     pub(crate) fn for_each_result(&self, mut f: impl FnMut(u32, &LaneResult)) {
         self.four.iter().for_each(|b| b.for_each_result(&mut f));
         self.one.iter().for_each(|b| b.for_each_result(&mut f));
@@ -146,44 +155,61 @@ mod tests {
     use glam::Vec3A;
 
     use super::*;
-    use crate::solver::contact_constraint::{FrictionPart, NormalBlock};
+    use crate::solver::contact_constraint::{
+        ConstraintPoint, ContactConstraint, FrictionPart, NormalBlock,
+    };
     use crate::solver::Softness;
 
-    fn constraint(body_a: u32, body_b: u32, writes: u8, count: u8) -> ContactConstraint {
-        ContactConstraint {
+    fn manifold(body_a: u32, body_b: u32, writes: u8, count: u8) -> ManifoldRef {
+        ManifoldRef {
+            pair: 0,
+            manifold: 0,
             body_a,
             body_b,
             writes,
-            normal: Vec3A::Y,
-            tangent: [Vec3A::X, Vec3A::Z],
-            restitution: 0.0,
-            softness: Softness::RIGID,
-            first: 0,
             count,
-            pair: 0,
-            manifold: 0,
-            friction: FrictionPart::default(),
-            block: NormalBlock::default(),
         }
     }
 
-    /// Every constraint lands in exactly one lane of one batch of its layout, and no batch
-    /// has a written body twice.
+    fn prepared(r: &ManifoldRef) -> PreparedManifold {
+        PreparedManifold {
+            constraint: ContactConstraint {
+                body_a: r.body_a,
+                body_b: r.body_b,
+                writes: r.writes,
+                normal: Vec3A::Y,
+                tangent: [Vec3A::X, Vec3A::Z],
+                restitution: 0.0,
+                softness: Softness::RIGID,
+                count: r.count,
+                friction: FrictionPart::default(),
+                block: NormalBlock::default(),
+            },
+            points: [ConstraintPoint::default(); 4],
+        }
+    }
+
+    /// Every manifold lands in exactly one lane of one batch of its layout, prepared once,
+    /// and no batch has a written body twice.
     #[test]
-    fn every_constraint_once_and_no_written_body_twice_in_a_batch() {
+    fn every_manifold_once_and_no_written_body_twice_in_a_batch() {
         let bodies = 80u32;
         let mut constraints = Vec::new();
         // A chain (each body touches the next), all on the static ground (index 0, never
         // written), and a hub, body 1, touching every other body (79 contacts).
         for b in 2..bodies {
-            constraints.push(constraint(b - 1, b, 3, 4));
-            constraints.push(constraint(0, b, 2, 1));
-            constraints.push(constraint(1, b, 3, if b % 2 == 0 { 1 } else { 3 }));
+            constraints.push(manifold(b - 1, b, 3, 4));
+            constraints.push(manifold(0, b, 2, 1));
+            constraints.push(manifold(1, b, 3, if b % 2 == 0 { 1 } else { 3 }));
         }
-        let points = vec![ConstraintPoint::default(); 4];
         let states = vec![BodyState::STATIC; bodies as usize];
         let mut batches = ContactBatches::default();
-        batches.build(&constraints, &points, &states);
+        let mut prepared_count = 0;
+        batches.build(&constraints, &states, |r| {
+            prepared_count += 1;
+            prepared(r)
+        });
+        assert_eq!(prepared_count, constraints.len());
 
         let mut seen = vec![0u32; constraints.len()];
         let mut check = |lanes: &[u32; LANES], four: bool| {

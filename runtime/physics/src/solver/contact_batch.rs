@@ -1,7 +1,7 @@
 //! [`ContactBatch`]: four manifolds solved at once, one per SIMD lane (warm start, the
-//! normal and friction rows of [`ContactConstraint`], restitution).
+//! normal and friction rows of [`ContactConstraint`](super::contact_constraint::ContactConstraint), restitution).
 //!
-//! The rows are those of the scalar formulation documented on [`ContactConstraint`],
+//! The rows are those of the scalar formulation documented on [`ContactConstraint`](super::contact_constraint::ContactConstraint),
 //! [`NormalBlock`](super::contact_constraint::NormalBlock) and
 //! [`FrictionPart`](super::contact_constraint::FrictionPart); here every branch is a lane
 //! select. The lanes of one batch never share a body they write ([`super::batching`]), so
@@ -17,7 +17,7 @@
 use glam::Vec3A;
 
 use super::body_state::BodyState;
-use super::contact_constraint::{ConstraintPoint, ContactConstraint};
+use super::contact_constraint::PreparedManifold;
 use super::face_contact::FaceContact;
 use super::lanes::{
     gather_deltas, gather_velocities, scatter_velocities, Velocities, F, LANES, V3,
@@ -29,7 +29,7 @@ pub(crate) type PointBatch = ContactBatch<1, PointContact>;
 pub(crate) type FaceBatch = ContactBatch<4, FaceContact>;
 
 /// Lanes of one contact point slot.
-#[derive(Clone, Copy, Debug, Default)]
+#[derive(Clone, Copy, Debug)]
 pub(crate) struct PointLanes {
     pub base_separation: F,
     pub normal_impulse: F,
@@ -40,6 +40,20 @@ pub(crate) struct PointLanes {
     pub rn_b: V3,
     pub irn_a: V3,
     pub irn_b: V3,
+}
+
+impl PointLanes {
+    const EMPTY: Self = Self {
+        base_separation: F::ZERO,
+        normal_impulse: F::ZERO,
+        max_normal_impulse: F::ZERO,
+        normal_mass: F::ZERO,
+        relative_velocity: F::ZERO,
+        rn_a: V3::ZERO,
+        rn_b: V3::ZERO,
+        irn_a: V3::ZERO,
+        irn_b: V3::ZERO,
+    };
 }
 
 /// Each point's normal row in one pass: where it is speculative (separated: rigid, may not
@@ -53,8 +67,10 @@ pub(crate) struct NormalRows<const N: usize> {
 
 /// What a manifold layout adds to the rows every manifold has.
 pub(crate) trait ManifoldRows: Copy + std::fmt::Debug {
-    /// Lane values from up to four constraints (and their points).
-    fn pack(slots: &[Option<&ContactConstraint>; LANES], points: &[ConstraintPoint]) -> Self;
+    /// Four empty lanes.
+    const EMPTY: Self;
+    /// Writes lane `l` from a prepared manifold.
+    fn set_lane(&mut self, l: usize, prepared: &PreparedManifold);
     /// Adds its warm-start impulses' angular parts (`wa` is subtracted from body A).
     fn warm_start(&self, wa: &mut V3, wb: &mut V3);
     /// Before the per-point sweep: a step shared by all points.
@@ -85,9 +101,9 @@ pub(crate) trait ManifoldRows: Copy + std::fmt::Debug {
 pub(crate) struct PointContact;
 
 impl ManifoldRows for PointContact {
-    fn pack(_: &[Option<&ContactConstraint>; LANES], _: &[ConstraintPoint]) -> Self {
-        Self
-    }
+    const EMPTY: Self = Self;
+    #[inline(always)]
+    fn set_lane(&mut self, _: usize, _: &PreparedManifold) {}
     #[inline(always)]
     fn warm_start(&self, _: &mut V3, _: &mut V3) {}
     #[inline(always)]
@@ -125,6 +141,8 @@ pub(crate) struct LaneResult {
     pub max_normal_impulse: [f32; 4],
     /// Friction impulse along the constraint's two tangents.
     pub tangent_impulse: [f32; 2],
+    /// The two tangents.
+    pub tangent: [Vec3A; 2],
     /// Twist friction impulse about the normal.
     pub twist_impulse: f32,
 }
@@ -159,29 +177,10 @@ pub(crate) struct ContactBatch<const N: usize, M: ManifoldRows> {
     manifold: M,
 }
 
-/// Lane `l` gets `f(slots[l])`, 0 for an empty slot.
+/// Sets lane `l` of `f`.
 #[inline(always)]
-pub(crate) fn lanes<T: Copy>(slots: &[Option<T>; LANES], f: impl Fn(T) -> f32) -> F {
-    F::new(std::array::from_fn(|l| slots[l].map_or(0.0, &f)))
-}
-
-/// Lane `l` gets `f(slots[l])`, zero for an empty slot.
-#[inline(always)]
-pub(crate) fn lanes3<T: Copy>(slots: &[Option<T>; LANES], f: impl Fn(T) -> Vec3A) -> V3 {
-    V3::from_lanes(std::array::from_fn(|l| slots[l].map_or(Vec3A::ZERO, &f)))
-}
-
-/// Point `k` of each lane's constraint, where it has one.
-#[inline(always)]
-pub(crate) fn point_slots<'a>(
-    slots: &[Option<&ContactConstraint>; LANES],
-    points: &'a [ConstraintPoint],
-    k: usize,
-) -> [Option<&'a ConstraintPoint>; LANES] {
-    slots.map(|c| {
-        c.filter(|c| k < usize::from(c.count))
-            .map(|c| &points[c.first as usize + k])
-    })
+pub(crate) fn set(f: &mut F, l: usize, value: f32) {
+    f.as_mut_array()[l] = value;
 }
 
 /// `max(floor, x)` per lane where only `x` may be NaN (then `floor`): SSE `maxps` returns its
@@ -201,77 +200,94 @@ pub(crate) struct Pass {
 }
 
 impl<const N: usize, M: ManifoldRows> ContactBatch<N, M> {
-    /// Packs up to four prepared constraints (`lanes_of`: indices into `constraints`, whose
-    /// points are in `points`).
-    pub(crate) fn pack(
-        lanes_of: &[u32],
-        constraints: &[ContactConstraint],
-        points: &[ConstraintPoint],
+    /// A batch with four empty lanes (zero masses: solving it changes nothing).
+    pub(crate) const EMPTY: Self = Self {
+        constraint: [u32::MAX; LANES],
+        body_a: [0; LANES],
+        body_b: [0; LANES],
+        writes_a: 0,
+        writes_b: 0,
+        inv_mass_a: V3::ZERO,
+        inv_mass_b: V3::ZERO,
+        normal: V3::ZERO,
+        tangent: [V3::ZERO; 2],
+        bias_rate: F::ZERO,
+        mass_scale: F::ZERO,
+        impulse_scale: F::ZERO,
+        restitution: F::ZERO,
+        points: [PointLanes::EMPTY; N],
+        friction: F::ZERO,
+        tangent_impulse: [F::ZERO; 2],
+        tangent_mass: [F::ZERO; 3],
+        slide_mass: F::ZERO,
+        rt_a: [V3::ZERO; 2],
+        rt_b: [V3::ZERO; 2],
+        irt_a: [V3::ZERO; 2],
+        irt_b: [V3::ZERO; 2],
+        manifold: M::EMPTY,
+    };
+
+    /// Writes a prepared manifold into lane `l`, which reports `id` in
+    /// [`ContactBatch::for_each_result`]. Lanes are written in place, one value at a time:
+    /// a batch is larger than the manifold that fills one lane.
+    pub(crate) fn set_lane(
+        &mut self,
+        l: usize,
+        id: u32,
+        prepared: &PreparedManifold,
         states: &[BodyState],
-    ) -> Self {
-        let slots: [Option<&ContactConstraint>; LANES] =
-            std::array::from_fn(|l| lanes_of.get(l).map(|&i| &constraints[i as usize]));
-        let constraint = std::array::from_fn(|l| lanes_of.get(l).copied().unwrap_or(u32::MAX));
-        let body_a = slots.map(|c| c.map_or(0, |c| c.body_a));
-        let body_b = slots.map(|c| c.map_or(0, |c| c.body_b));
-        let mut writes_a = 0u8;
-        let mut writes_b = 0u8;
-        for (l, c) in slots.iter().enumerate() {
-            if let Some(c) = c {
-                writes_a |= (c.writes & 1) << l;
-                writes_b |= ((c.writes >> 1) & 1) << l;
-            }
+    ) {
+        let c = &prepared.constraint;
+        self.constraint[l] = id;
+        self.body_a[l] = c.body_a;
+        self.body_b[l] = c.body_b;
+        self.writes_a |= (c.writes & 1) << l;
+        self.writes_b |= ((c.writes >> 1) & 1) << l;
+        self.inv_mass_a.set(l, states[c.body_a as usize].inv_mass);
+        self.inv_mass_b.set(l, states[c.body_b as usize].inv_mass);
+        self.normal.set(l, c.normal);
+        self.tangent[0].set(l, c.tangent[0]);
+        self.tangent[1].set(l, c.tangent[1]);
+        set(&mut self.bias_rate, l, c.softness.bias_rate);
+        set(&mut self.mass_scale, l, c.softness.mass_scale);
+        set(&mut self.impulse_scale, l, c.softness.impulse_scale);
+        set(&mut self.restitution, l, c.restitution);
+        for (lanes, p) in self
+            .points
+            .iter_mut()
+            .zip(&prepared.points)
+            .take(usize::from(c.count))
+        {
+            set(&mut lanes.base_separation, l, p.base_separation);
+            set(&mut lanes.normal_impulse, l, p.normal_impulse);
+            set(&mut lanes.max_normal_impulse, l, p.max_normal_impulse);
+            set(&mut lanes.normal_mass, l, p.normal_mass);
+            set(&mut lanes.relative_velocity, l, p.relative_velocity);
+            lanes.rn_a.set(l, p.rn_a);
+            lanes.rn_b.set(l, p.rn_b);
+            lanes.irn_a.set(l, p.irn_a);
+            lanes.irn_b.set(l, p.irn_b);
         }
-        let one_point = |k: usize| {
-            let s = &point_slots(&slots, points, k);
-            PointLanes {
-                base_separation: lanes(s, |p| p.base_separation),
-                normal_impulse: lanes(s, |p| p.normal_impulse),
-                max_normal_impulse: lanes(s, |p| p.max_normal_impulse),
-                normal_mass: lanes(s, |p| p.normal_mass),
-                relative_velocity: lanes(s, |p| p.relative_velocity),
-                rn_a: lanes3(s, |p| p.rn_a),
-                rn_b: lanes3(s, |p| p.rn_b),
-                irn_a: lanes3(s, |p| p.irn_a),
-                irn_b: lanes3(s, |p| p.irn_b),
-            }
-        };
-        Self {
-            constraint,
-            body_a,
-            body_b,
-            writes_a,
-            writes_b,
-            inv_mass_a: V3::from_lanes(body_a.map(|i| states[i as usize].inv_mass)),
-            inv_mass_b: V3::from_lanes(body_b.map(|i| states[i as usize].inv_mass)),
-            normal: lanes3(&slots, |c| c.normal),
-            tangent: [
-                lanes3(&slots, |c| c.tangent[0]),
-                lanes3(&slots, |c| c.tangent[1]),
-            ],
-            bias_rate: lanes(&slots, |c| c.softness.bias_rate),
-            mass_scale: lanes(&slots, |c| c.softness.mass_scale),
-            impulse_scale: lanes(&slots, |c| c.softness.impulse_scale),
-            restitution: lanes(&slots, |c| c.restitution),
-            points: std::array::from_fn(one_point),
-            friction: lanes(&slots, |c| c.friction.friction),
-            tangent_impulse: [
-                lanes(&slots, |c| c.friction.tangent_impulse[0]),
-                lanes(&slots, |c| c.friction.tangent_impulse[1]),
-            ],
-            tangent_mass: std::array::from_fn(|k| lanes(&slots, |c| c.friction.tangent_mass[k])),
-            slide_mass: lanes(&slots, |c| c.friction.slide_mass),
-            rt_a: std::array::from_fn(|k| lanes3(&slots, |c| c.friction.rt_a[k])),
-            rt_b: std::array::from_fn(|k| lanes3(&slots, |c| c.friction.rt_b[k])),
-            irt_a: std::array::from_fn(|k| lanes3(&slots, |c| c.friction.irt_a[k])),
-            irt_b: std::array::from_fn(|k| lanes3(&slots, |c| c.friction.irt_b[k])),
-            manifold: M::pack(&slots, points),
+        let f = &c.friction;
+        set(&mut self.friction, l, f.friction);
+        for k in 0..2 {
+            set(&mut self.tangent_impulse[k], l, f.tangent_impulse[k]);
+            self.rt_a[k].set(l, f.rt_a[k]);
+            self.rt_b[k].set(l, f.rt_b[k]);
+            self.irt_a[k].set(l, f.irt_a[k]);
+            self.irt_b[k].set(l, f.irt_b[k]);
         }
+        for k in 0..3 {
+            set(&mut self.tangent_mass[k], l, f.tangent_mass[k]);
+        }
+        set(&mut self.slide_mass, l, f.slide_mass);
+        self.manifold.set_lane(l, prepared);
     }
 
     /// Calls `f(constraint index, impulses)` for each lane in use.
     pub(crate) fn for_each_result(&self, mut f: impl FnMut(u32, &LaneResult)) {
         let ti = self.tangent_impulse.map(F::to_array);
+        let tangent = self.tangent.map(V3::to_lanes);
         let twist = self.manifold.twist_impulse().to_array();
         let ni = self.points.map(|p| p.normal_impulse.to_array());
         let max_ni = self.points.map(|p| p.max_normal_impulse.to_array());
@@ -281,6 +297,7 @@ impl<const N: usize, M: ManifoldRows> ContactBatch<N, M> {
             }
             let mut r = LaneResult {
                 tangent_impulse: [ti[0][l], ti[1][l]],
+                tangent: [tangent[0][l], tangent[1][l]],
                 twist_impulse: twist[l],
                 ..LaneResult::default()
             };

@@ -94,6 +94,30 @@ pub(crate) struct NormalBlock {
     pub coupling: [f32; 6],
 }
 
+/// A manifold the solver takes this step: where it is, and what batching needs to know
+/// before it is prepared (which bodies it writes, how many points).
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct ManifoldRef {
+    /// Pair and manifold index in the narrowphase, to read the contacts and store impulses.
+    pub pair: u32,
+    pub manifold: u32,
+    /// Solver indices of the two bodies.
+    pub body_a: u32,
+    pub body_b: u32,
+    /// As [`ContactConstraint::writes`].
+    pub writes: u8,
+    /// Points, 1–4.
+    pub count: u8,
+}
+
+/// A constraint and its points, prepared for one step (lives on the stack while a batch
+/// is packed).
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct PreparedManifold {
+    pub constraint: ContactConstraint,
+    pub points: [ConstraintPoint; 4],
+}
+
 /// One manifold as a solver constraint.
 #[derive(Clone, Copy, Debug)]
 pub(crate) struct ContactConstraint {
@@ -105,13 +129,7 @@ pub(crate) struct ContactConstraint {
     pub tangent: [Vec3A; 2],
     pub restitution: f32,
     pub softness: Softness,
-    /// First point in the shared point array (points live apart so that one-point
-    /// manifolds do not drag four points' worth of memory through the cache).
-    pub first: u32,
     pub count: u8,
-    /// Pair and manifold index, to store impulses back.
-    pub pair: u32,
-    pub manifold: u32,
     /// Friction at the manifold centre.
     pub friction: FrictionPart,
     /// The normal rows as a block.

@@ -2,11 +2,9 @@
 //! [`ContactBatch`](super::contact_batch::ContactBatch): the shared normal step over its
 //! points, the coupling between its points' normal rows, and twist friction about the normal.
 
-use super::contact_batch::{
-    fmax, lanes, lanes3, point_slots, ManifoldRows, NormalRows, PointLanes,
-};
-use super::contact_constraint::{ConstraintPoint, ContactConstraint, PAIR_SLOT};
-use super::lanes::{Velocities, F, LANES, V3};
+use super::contact_batch::{fmax, set, ManifoldRows, NormalRows, PointLanes};
+use super::contact_constraint::{PreparedManifold, PAIR_SLOT};
+use super::lanes::{Velocities, F, V3};
 
 /// The multi-point rows of four manifolds, one per lane (see
 /// [`NormalBlock`](super::contact_constraint::NormalBlock)).
@@ -34,38 +32,60 @@ pub(crate) struct FaceContact {
 }
 
 impl ManifoldRows for FaceContact {
-    fn pack(slots: &[Option<&ContactConstraint>; LANES], points: &[ConstraintPoint]) -> Self {
-        let per_point = |f: fn(&ConstraintPoint) -> f32| {
-            std::array::from_fn(|k| lanes(&point_slots(slots, points, k), f))
+    const EMPTY: Self = Self {
+        soft_compliance: F::ZERO,
+        patch: F::ZERO,
+        patch_k: F::ZERO,
+        row_sum: [F::ZERO; 4],
+        coupling: [F::ZERO; 6],
+        count: F::ZERO,
+        inv_count: F::ZERO,
+        inv_normal_mass: [F::ZERO; 4],
+        twist_lever: [F::ZERO; 4],
+        active: [F::ZERO; 4],
+        twist_impulse: F::ZERO,
+        twist_mass: F::ZERO,
+        in_a: V3::ZERO,
+        in_b: V3::ZERO,
+    };
+
+    fn set_lane(&mut self, l: usize, prepared: &PreparedManifold) {
+        let c = &prepared.constraint;
+        let soft = if c.softness.mass_scale > 0.0 {
+            c.softness.impulse_scale / c.softness.mass_scale
+        } else {
+            0.0
         };
-        Self {
-            soft_compliance: lanes(slots, |c| {
-                if c.softness.mass_scale > 0.0 {
-                    c.softness.impulse_scale / c.softness.mass_scale
-                } else {
-                    0.0
-                }
-            }),
-            patch: lanes(slots, |c| {
-                if c.block.patch {
-                    f32::from_bits(u32::MAX)
-                } else {
-                    0.0
-                }
-            }),
-            patch_k: lanes(slots, |c| c.block.patch_k),
-            row_sum: std::array::from_fn(|k| lanes(slots, |c| c.block.row_sum[k])),
-            coupling: std::array::from_fn(|k| lanes(slots, |c| c.block.coupling[k])),
-            count: lanes(slots, |c| f32::from(c.count)),
-            inv_count: lanes(slots, |c| 1.0 / f32::from(c.count.max(1))),
-            inv_normal_mass: per_point(|p| p.inv_normal_mass),
-            twist_lever: per_point(|p| p.twist_lever),
-            active: per_point(|_| 1.0),
-            twist_impulse: lanes(slots, |c| c.friction.twist_impulse),
-            twist_mass: lanes(slots, |c| c.friction.twist_mass),
-            in_a: lanes3(slots, |c| c.friction.in_a),
-            in_b: lanes3(slots, |c| c.friction.in_b),
+        set(&mut self.soft_compliance, l, soft);
+        let mask = if c.block.patch {
+            f32::from_bits(u32::MAX)
+        } else {
+            0.0
+        };
+        set(&mut self.patch, l, mask);
+        set(&mut self.patch_k, l, c.block.patch_k);
+        for k in 0..4 {
+            set(&mut self.row_sum[k], l, c.block.row_sum[k]);
         }
+        for k in 0..6 {
+            set(&mut self.coupling[k], l, c.block.coupling[k]);
+        }
+        set(&mut self.count, l, f32::from(c.count));
+        set(&mut self.inv_count, l, 1.0 / f32::from(c.count.max(1)));
+        for (k, p) in prepared
+            .points
+            .iter()
+            .enumerate()
+            .take(usize::from(c.count))
+        {
+            set(&mut self.inv_normal_mass[k], l, p.inv_normal_mass);
+            set(&mut self.twist_lever[k], l, p.twist_lever);
+            set(&mut self.active[k], l, 1.0);
+        }
+        set(&mut self.twist_impulse, l, c.friction.twist_impulse);
+        set(&mut self.twist_mass, l, c.friction.twist_mass);
+        self.in_a.set(l, c.friction.in_a);
+        self.in_b.set(l, c.friction.in_b);
     }
 
     #[inline(always)]

@@ -37,6 +37,14 @@ impl V3 {
         Self { x, y, z }
     }
 
+    /// Sets lane `l` to `v`.
+    #[inline(always)]
+    pub fn set(&mut self, l: usize, v: Vec3A) {
+        self.x.as_mut_array()[l] = v.x;
+        self.y.as_mut_array()[l] = v.y;
+        self.z.as_mut_array()[l] = v.z;
+    }
+
     /// The vector in each lane.
     #[inline(always)]
     pub fn to_lanes(self) -> [Vec3A; LANES] {
