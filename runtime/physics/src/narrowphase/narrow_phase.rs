@@ -258,14 +258,6 @@ impl NarrowPhase {
             let rot_a = ba.pose.rotation;
             let rot_b = bb.pose.rotation;
             let d_ab = bb.pose.translation - ba.pose.translation;
-            let pa = Pose::new(
-                rot_a * ca.local_pose.translation,
-                rot_a * ca.local_pose.rotation,
-            );
-            let pb = Pose::new(
-                d_ab + rot_b * cb.local_pose.translation,
-                rot_b * cb.local_pose.rotation,
-            );
             let inv_a = rot_a.inverse();
             let rel = (inv_a * d_ab, inv_a * rot_b);
             let pair = &mut self.pairs[i];
@@ -295,6 +287,14 @@ impl NarrowPhase {
                 }
             }
             pair.generated_at = Some(rel);
+            let pa = Pose::new(
+                rot_a * ca.local_pose.translation,
+                rot_a * ca.local_pose.rotation,
+            );
+            let pb = Pose::new(
+                d_ab + rot_b * cb.local_pose.translation,
+                rot_b * cb.local_pose.rotation,
+            );
             self.raw.clear();
             collide(
                 &ca.shape,
