@@ -53,12 +53,6 @@ impl PhysicsWorld {
 
     pub(crate) fn contact_report_stage(&mut self) {
         let min_y = self.settings.grounded_min_normal_y;
-        for k in 1..self.solver_bodies.len() {
-            if let Some(b) = self.bodies.arena.get_by_index_mut(self.solver_handles[k]) {
-                b.grounded = false;
-                b.last_contact_normal = None;
-            }
-        }
         // Deepest contact of each awake dynamic body, by solver index (no sort, no allocation
         // once the scratch has grown).
         let mut deepest = std::mem::take(&mut self.deepest_contact);
@@ -89,13 +83,13 @@ impl PhysicsWorld {
                 }
             }
         }
+        // One write per awake body (bodies are large: a second pass to reset them first cost
+        // a cache miss each).
         for (k, &(sep, n, grounded)) in deepest.iter().enumerate().skip(1) {
-            if sep == f32::MAX {
-                continue;
-            }
             if let Some(b) = self.bodies.arena.get_by_index_mut(self.solver_handles[k]) {
-                b.grounded = grounded;
-                b.last_contact_normal = Some(n);
+                let touching = sep != f32::MAX;
+                b.grounded = touching && grounded;
+                b.last_contact_normal = touching.then_some(n);
             }
         }
         self.deepest_contact = deepest;
