@@ -270,6 +270,7 @@ pub fn run_sweep(opts: &Options, mut on_row: impl FnMut(&Row)) -> anyhow::Result
     }
     let mut rows = Vec::new();
     for scene in scenes {
+        let mut references = Vec::new();
         for engine in EngineKind::ALL {
             let reference = if scene.reference() == Reference::Converged {
                 pb.set_message(format!("{} {} reference", scene.name(), engine.name()));
@@ -279,29 +280,37 @@ pub fn run_sweep(opts: &Options, mut on_row: impl FnMut(&Row)) -> anyhow::Result
             } else {
                 None
             };
-            for &s in &settings {
-                pb.set_message(format!(
-                    "{} {} {} Hz x{}",
-                    scene.name(),
-                    engine.name(),
-                    s.hz,
-                    s.iterations
-                ));
-                let mut ms = Vec::new();
-                let mut last = None;
-                for _ in 0..opts.repeats() {
+            references.push(reference);
+        }
+        // Per setting, each repeat runs both engines back to back, so a machine that slows
+        // down or speeds up during the sweep (other jobs, clocks) weighs on both alike.
+        let mut scene_rows: Vec<Vec<Row>> = EngineKind::ALL.iter().map(|_| Vec::new()).collect();
+        for &s in &settings {
+            let mut ms: Vec<Vec<f64>> = EngineKind::ALL.iter().map(|_| Vec::new()).collect();
+            let mut last: Vec<Option<Measured>> = EngineKind::ALL.iter().map(|_| None).collect();
+            for _ in 0..opts.repeats() {
+                for (e, &engine) in EngineKind::ALL.iter().enumerate() {
+                    pb.set_message(format!(
+                        "{} {} {} Hz x{}",
+                        scene.name(),
+                        engine.name(),
+                        s.hz,
+                        s.iterations
+                    ));
                     let m = run_once(scene, engine, s, size);
-                    ms.push(m.ms_per_step);
-                    last = Some(m);
+                    ms[e].push(m.ms_per_step);
+                    last[e] = Some(m);
                     pb.inc(1);
                 }
-                let m = last.expect("at least one repeat");
-                let ms_per_step = median(&mut ms);
-                let error = match reference {
+            }
+            for (e, &engine) in EngineKind::ALL.iter().enumerate() {
+                let m = last[e].take().expect("at least one repeat");
+                let ms_per_step = median(&mut ms[e]);
+                let error = match references[e] {
                     Some(r) => (m.figure - r).abs(),
                     None => m.figure,
                 };
-                let row = Row {
+                scene_rows[e].push(Row {
                     scene: scene.name(),
                     engine,
                     settings: s,
@@ -311,10 +320,13 @@ pub fn run_sweep(opts: &Options, mut on_row: impl FnMut(&Row)) -> anyhow::Result
                     ms_per_sim_second: ms_per_step * f64::from(s.hz),
                     figure: m.figure,
                     error,
-                };
-                on_row(&row);
-                rows.push(row);
+                });
             }
+        }
+        // Rows in the table's order: one engine's settings, then the other's.
+        for row in scene_rows.into_iter().flatten() {
+            on_row(&row);
+            rows.push(row);
         }
     }
     pb.finish_and_clear();
