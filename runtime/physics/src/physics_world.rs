@@ -44,6 +44,8 @@ pub struct PhysicsWorld {
     pub(crate) solver_handles: Vec<u32>,
     /// The manifolds the solver takes this step, in order.
     pub(crate) manifold_refs: Vec<ManifoldRef>,
+    /// What the narrowphase reads of each awake body, by arena index (see `NarrowBody`).
+    pub(crate) narrow_bodies: Vec<crate::narrowphase::narrow_body::NarrowBody>,
     /// Solver index and dynamic flag by body arena index (see [`SolverSlot`]).
     pub(crate) solver_slots: Vec<SolverSlot>,
     /// The constraints as SIMD batches for the substeps.
@@ -103,6 +105,7 @@ impl PhysicsWorld {
             solver_states: Vec::new(),
             solver_handles: Vec::new(),
             manifold_refs: Vec::new(),
+            narrow_bodies: Vec::new(),
             solver_slots: Vec::new(),
             contact_batches: Default::default(),
             new_pairs: Vec::new(),

@@ -10,6 +10,7 @@ pub mod convex_convex;
 pub mod epa;
 pub mod gjk;
 pub(crate) mod half_space_contacts;
+pub(crate) mod narrow_body;
 pub mod narrow_phase;
 pub mod narrow_stats;
 pub mod pair_hasher;

@@ -8,6 +8,7 @@ use super::collide::{collide, CollideScratch};
 use super::contact_manifold::ContactManifold;
 use super::contact_pair::ContactPair;
 use super::contact_point::ContactPoint;
+use super::narrow_body::NarrowBody;
 use super::narrow_stats::NarrowStats;
 use super::pair_hasher::BuildPairHasher;
 use super::raw_manifold::RawManifold;
@@ -192,6 +193,7 @@ impl NarrowPhase {
         events: &mut Vec<ContactEvent>,
         wake: &mut Vec<BodyHandle>,
         active: &[bool],
+        awake: &[NarrowBody],
     ) {
         let reuse_cos_half = (0.5 * MANIFOLD_REUSE_MAX_ANGLE).cos();
         self.updated_pairs.clear();
@@ -207,11 +209,15 @@ impl NarrowPhase {
                 i += 1;
                 continue;
             }
+            // Awake bodies from the compact copy (by reference: copying them to the stack and
+            // reading them back in wider loads stalled store forwarding), the others (static,
+            // asleep) copied from the set.
+            let (mut own_a, mut own_b) = (NarrowBody::default(), NarrowBody::default());
             let (Some(ca), Some(cb), Some(ba), Some(bb)) = (
                 colliders.get(hca),
                 colliders.get(hcb),
-                bodies.get(hba),
-                bodies.get(hbb),
+                narrow_body(hba, flag(hba), awake, bodies, &mut own_a),
+                narrow_body(hbb, flag(hbb), awake, bodies, &mut own_b),
             ) else {
                 let p = self.remove_at(i);
                 if p.touching {
@@ -229,7 +235,7 @@ impl NarrowPhase {
                 i += 1;
                 continue;
             }
-            let (act_a, act_b) = (is_active(ba), is_active(bb));
+            let (act_a, act_b) = (ba.active, bb.active);
             if !act_a && !act_b {
                 i += 1;
                 continue;
@@ -255,9 +261,9 @@ impl NarrowPhase {
                 } else {
                     sweep.min(settings.max_speculative_distance)
                 };
-            let rot_a = ba.pose.rotation;
-            let rot_b = bb.pose.rotation;
-            let d_ab = bb.pose.translation - ba.pose.translation;
+            let rot_a = ba.rotation;
+            let rot_b = bb.rotation;
+            let d_ab = bb.translation - ba.translation;
             let inv_a = rot_a.inverse();
             let rel = (inv_a * d_ab, inv_a * rot_b);
             let pair = &mut self.pairs[i];
@@ -306,8 +312,8 @@ impl NarrowPhase {
                 stats,
                 &mut self.scratch,
             );
-            let com_a = rot_a * ba.mass.local_com;
-            let com_b = d_ab + rot_b * bb.mass.local_com;
+            let com_a = rot_a * ba.local_com;
+            let com_b = d_ab + rot_b * bb.local_com;
             let inv_b = rot_b.inverse();
             let pair = &mut self.pairs[i];
             self.old.clear();
@@ -367,10 +373,10 @@ impl NarrowPhase {
             pair.min_separation = min_sep;
             // Speculative points count: the solver would otherwise treat the sleeper as static.
             if !pair.manifolds.is_empty() {
-                if act_a && !act_b && bb.body_type == BodyType::Dynamic && bb.sleeping {
+                if act_a && !act_b && bb.sleeping_dynamic {
                     wake.push(hbb);
                 }
-                if act_b && !act_a && ba.body_type == BodyType::Dynamic && ba.sleeping {
+                if act_b && !act_a && ba.sleeping_dynamic {
                     wake.push(hba);
                 }
             }
@@ -380,19 +386,36 @@ impl NarrowPhase {
     }
 }
 
+/// Body `h` as the narrowphase sees it: from the awake copy where it is awake, else copied
+/// from the set into `own`.
+fn narrow_body<'a>(
+    h: BodyHandle,
+    awake_now: bool,
+    awake: &'a [NarrowBody],
+    bodies: &BodySet,
+    own: &'a mut NarrowBody,
+) -> Option<&'a NarrowBody> {
+    if awake_now {
+        awake.get(h.index() as usize)
+    } else {
+        *own = NarrowBody::of(bodies.get(h)?);
+        Some(own)
+    }
+}
+
 /// Moves a pair's manifolds with its bodies: normals, separations and solver anchors from
 /// the points' body-local positions (the bodies barely moved since generation, so the
 /// touching features are the same); impulses stay for warm starting.
 fn refresh_manifolds(
     pair: &mut ContactPair,
-    ba: &RigidBody,
-    bb: &RigidBody,
+    ba: &NarrowBody,
+    bb: &NarrowBody,
     d_ab: Vec3,
     margin: f32,
 ) {
-    let (rot_a, rot_b) = (ba.pose.rotation, bb.pose.rotation);
-    let com_a = rot_a * ba.mass.local_com;
-    let com_b = d_ab + rot_b * bb.mass.local_com;
+    let (rot_a, rot_b) = (ba.rotation, bb.rotation);
+    let com_a = rot_a * ba.local_com;
+    let com_b = d_ab + rot_b * bb.local_com;
     let mut min_sep = f32::MAX;
     for m in &mut pair.manifolds {
         let n = rot_a * m.local_normal;

@@ -1,5 +1,6 @@
 //! Narrowphase stage: regenerate manifolds of active pairs, collect wake-ups.
 
+use crate::narrowphase::narrow_body::NarrowBody;
 use crate::narrowphase::NarrowStats;
 use crate::physics_world::PhysicsWorld;
 
@@ -7,6 +8,16 @@ impl PhysicsWorld {
     pub(crate) fn narrowphase_stage(&mut self) {
         let mut stats = NarrowStats::default();
         let mut wake = std::mem::take(&mut self.wake);
+        // The awake bodies' copy for the pair loop (see `NarrowBody`).
+        let n = self.bodies.arena.capacity();
+        if self.narrow_bodies.len() < n {
+            self.narrow_bodies.resize(n, NarrowBody::default());
+        }
+        for &i in &self.active_bodies {
+            if let Some(b) = self.bodies.arena.get_by_index(i) {
+                self.narrow_bodies[i as usize] = NarrowBody::of(b);
+            }
+        }
         self.narrowphase.update(
             &self.bodies,
             &self.colliders,
@@ -16,6 +27,7 @@ impl PhysicsWorld {
             &mut self.output.events,
             &mut wake,
             &self.active_flags,
+            &self.narrow_bodies,
         );
         // Wake touched sleepers now so they take part in this step's solve (their contacts
         // with static bodies are unchanged since they fell asleep). Their pairs were not
