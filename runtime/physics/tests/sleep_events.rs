@@ -1,4 +1,4 @@
-//! Sleeping, waking, contact events, grounded flag, NaN quarantine, CCD.
+//! Sleeping, waking, contact events and pair lifetime, grounded flag, NaN quarantine, CCD.
 mod common;
 use common::*;
 use onyx_physics::glam::Vec3;
@@ -210,5 +210,44 @@ fn ccd_one_cm_sphere_at_300_mps_does_not_pass_5_cm_wall() {
     assert!(
         x_no > 5.025,
         "without CCD expected tunnelling, sphere max x = {x_no}"
+    );
+}
+
+/// A pair lives exactly while the two fat boxes overlap: a ball thrown up off a box loses
+/// its pair once it has left the box's bounds (its proxy moved out of its fat box, so the
+/// overlap is tested again), and gets one back when it lands.
+#[test]
+fn a_pair_lives_while_fat_boxes_overlap() {
+    let mut w = PhysicsWorld::new(PhysicsSettings::default());
+    let g = w.insert_body(RigidBodyDesc::fixed());
+    w.insert_collider(ColliderDesc::cuboid(2.0, 0.5, 2.0), g)
+        .unwrap();
+    let b = w.insert_body(RigidBodyDesc::dynamic().translation(Vec3::new(0.0, 0.75, 0.0)));
+    w.insert_collider(ColliderDesc::sphere(0.25), b).unwrap();
+    run(&mut w, 30);
+    assert_eq!(w.step().counters.pairs, 1, "the resting ball has one pair");
+
+    w.body_mut(b).unwrap().set_linvel(Vec3::new(0.0, 10.0, 0.0));
+    let mut fewest = u32::MAX;
+    let mut steps_alone = 0;
+    for _ in 0..240 {
+        let pairs = w.step().counters.pairs;
+        fewest = fewest.min(pairs);
+        steps_alone += u32::from(pairs == 0);
+    }
+    assert_eq!(fewest, 0, "the pair outlived the overlap of the fat boxes");
+    assert!(
+        steps_alone > 60,
+        "only {steps_alone} steps without a pair in a ~2 s flight"
+    );
+    let y = w.body(b).unwrap().translation().y;
+    assert!(
+        (y - 0.75).abs() < 0.01,
+        "the ball lands back on the box (y = {y})"
+    );
+    assert_eq!(
+        w.step().counters.pairs,
+        1,
+        "the landed ball has its pair again"
     );
 }
