@@ -107,3 +107,37 @@ fn five_box_stack_at_1e5_m_offset_rests_like_at_origin() {
         "far stack top height {y}, expected 4.5 ± 0.05"
     );
 }
+
+/// A frictionless stack with its middle box 10 cm off centre is in equilibrium (every box's
+/// weight is over its support) and must stay so: nothing but the contact normals acts
+/// sideways, so a normal that follows the few-µm tilt of a loaded compliant contact would
+/// push the boxes downhill and apart (they used to slide off each other within ~50 s).
+#[test]
+fn frictionless_offset_stack_holds_still_for_4000_steps() {
+    let (mut w, _) = world_with_ground(0.0);
+    w.settings_mut().sleep_enabled = false;
+    let h = 0.5;
+    let mut boxes = Vec::new();
+    for i in 0..3 {
+        let x = if i == 1 { 0.1 } else { 0.0 };
+        let p = Vec3::new(x, h + 2.0 * h * i as f32, 0.0);
+        let b = w.insert_body(RigidBodyDesc::dynamic().translation(p));
+        w.insert_collider(ColliderDesc::cuboid(h, h, h).friction(0.0), b);
+        boxes.push((b, p));
+    }
+    run(&mut w, 4000);
+    for (i, &(b, p0)) in boxes.iter().enumerate() {
+        let p = w.body(b).unwrap().translation();
+        let sideways = Vec3::new(p.x - p0.x, 0.0, p.z - p0.z).length();
+        assert!(
+            sideways < 1e-3,
+            "box {i} moved {sideways} m sideways over 4000 frictionless steps, expected < 1 mm"
+        );
+        assert!(
+            (p.y - p0.y).abs() < 0.01,
+            "box {i} height {} (start {})",
+            p.y,
+            p0.y
+        );
+    }
+}

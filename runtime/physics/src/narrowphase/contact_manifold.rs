@@ -9,10 +9,9 @@ use super::raw_manifold::MAX_MANIFOLD_POINTS;
 /// Contact points of one feature pair with a shared normal (from A to B).
 #[derive(Clone, Debug, PartialEq, Default)]
 pub struct ContactManifold {
-    /// Unit normal from collider A to collider B, world axes.
+    /// Unit normal from collider A to collider B, world axes, as generated: it stays fixed
+    /// while the pair's manifolds are reused (see `narrowphase::narrow_phase`).
     pub normal: Vec3,
-    /// Normal in body A's frame.
-    pub local_normal: Vec3,
     /// Points, stored inline: the solver reads every manifold's points each step, and a
     /// separate allocation per manifold cost a cache miss each time.
     pub points: ArrayVec<ContactPoint, MAX_MANIFOLD_POINTS>,

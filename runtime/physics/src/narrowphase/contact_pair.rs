@@ -37,9 +37,21 @@ pub struct ContactPair {
     /// stage while it writes the impulses back (`None` when the pair was not solved this
     /// step), so that touch tracking need not walk the points again.
     pub(crate) solved_pushing: Option<bool>,
-    /// Pose of B's body in A's body frame when the manifolds were last generated
-    /// (translation, rotation); `None` until the first generation.
-    pub(crate) generated_at: Option<(glam::Vec3, glam::Quat)>,
+    /// The bodies' poses when the manifolds were last generated; `None` until the first
+    /// generation.
+    pub(crate) generated_at: Option<Generation>,
+}
+
+/// Poses a pair's manifolds were generated at, which reuse is measured against.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) struct Generation {
+    /// B's body translation in A's body frame.
+    pub(crate) translation: glam::Vec3,
+    /// B's body rotation in A's body frame.
+    pub(crate) rotation: glam::Quat,
+    /// A's body rotation (world): the normals stay fixed in world axes while reused, so A
+    /// must not have turned far either.
+    pub(crate) rotation_a: glam::Quat,
 }
 
 impl ContactPair {
