@@ -274,13 +274,34 @@ impl NarrowPhase {
             let rot_b = bb.rotation;
             let d_ab = bb.translation - ba.translation;
             let inv_a = rot_a.inverse();
-            let rel = (inv_a * d_ab, inv_a * rot_b);
             let pair = &mut self.pairs[i];
-            // Two balls are regenerated every step: their normal is the line of centres, which
-            // a kept normal would not follow (a pile of spheres sank 3.3 cm instead of 2.4),
-            // and their test costs less than the reuse bookkeeping.
-            let balls = matches!((&ca.shape, &cb.shape), (Shape::Sphere(_), Shape::Sphere(_)));
-            if let Some(g) = pair.generated_at.filter(|_| !balls) {
+            // Two balls are regenerated every step, in place: their normal is the line of
+            // centres, which a kept normal would not follow (a pile of spheres sank 3.3 cm
+            // instead of 2.4), and their one point costs less than the reuse bookkeeping.
+            if let (Shape::Sphere(sa), Shape::Sphere(sb)) = (&ca.shape, &cb.shape) {
+                let centre_a = rot_a * ca.local_pose.translation;
+                let centre_b = d_ab + rot_b * cb.local_pose.translation;
+                let frame = BallFrame {
+                    inv_a,
+                    inv_b: rot_b.inverse(),
+                    d_ab,
+                    com_a: rot_a * ba.local_com,
+                    com_b: d_ab + rot_b * bb.local_com,
+                };
+                ball_ball(
+                    pair,
+                    (centre_a, sa.radius),
+                    (centre_b, sb.radius),
+                    margin,
+                    &frame,
+                );
+                wake_sleeper(pair, (hba, ba), (hbb, bb), wake);
+                mark_updated(pair, i, &mut self.updated_pairs);
+                i += 1;
+                continue;
+            }
+            let rel = (inv_a * d_ab, inv_a * rot_b);
+            if let Some(g) = pair.generated_at {
                 let size = ca
                     .aabb
                     .half_extents()
@@ -392,15 +413,7 @@ impl NarrowPhase {
                 }
             }
             pair.min_separation = min_sep;
-            // Speculative points count: the solver would otherwise treat the sleeper as static.
-            if !pair.manifolds.is_empty() {
-                if act_a && !act_b && bb.sleeping_dynamic {
-                    wake.push(hbb);
-                }
-                if act_b && !act_a && ba.sleeping_dynamic {
-                    wake.push(hba);
-                }
-            }
+            wake_sleeper(pair, (hba, ba), (hbb, bb), wake);
             mark_updated(pair, i, &mut self.updated_pairs);
             i += 1;
         }
@@ -421,6 +434,85 @@ fn narrow_body<'a>(
     } else {
         *own = NarrowBody::of(bodies.get(h)?);
         Some(own)
+    }
+}
+
+/// Where a freshly generated point goes: body-A rotation inverse, body-B rotation inverse,
+/// B's body translation relative to A's, and both centres of mass, all in world axes about
+/// A's body origin.
+struct BallFrame {
+    inv_a: glam::Quat,
+    inv_b: glam::Quat,
+    d_ab: Vec3,
+    com_a: Vec3,
+    com_b: Vec3,
+}
+
+/// Writes the contact of two balls (centre, radius) into the pair's single manifold, keeping
+/// its impulses for warm starting (a ball pair's one point is always the same feature); no
+/// manifold beyond `margin`. The same geometry as [`super::sphere_sphere::sphere_sphere`]
+/// without its allocation and the point matching.
+fn ball_ball(
+    pair: &mut ContactPair,
+    (ca, ra): (Vec3, f32),
+    (cb, rb): (Vec3, f32),
+    margin: f32,
+    f: &BallFrame,
+) {
+    let d = cb - ca;
+    let dist = d.length();
+    let separation = dist - ra - rb;
+    if separation > margin {
+        pair.manifolds.clear();
+        pair.min_separation = f32::MAX;
+        return;
+    }
+    let n = if dist > 1e-9 { d / dist } else { Vec3::Y };
+    let point = ((ca + n * ra) + (cb - n * rb)) * 0.5;
+    let (normal_impulse, tangent_impulse, twist_impulse) = pair
+        .manifolds
+        .first()
+        .and_then(|m| m.points.first())
+        .map_or((0.0, Vec3::ZERO, 0.0), |p| {
+            (p.normal_impulse, p.tangent_impulse, p.twist_impulse)
+        });
+    pair.manifolds.resize_with(1, ContactManifold::default);
+    let m = &mut pair.manifolds[0];
+    m.normal = n;
+    m.tangent1 = n.any_orthonormal_vector();
+    m.points.clear();
+    m.points.push(ContactPoint {
+        local_a: f.inv_a * point,
+        local_b: f.inv_b * (point - f.d_ab),
+        separation,
+        generated_separation: separation,
+        normal_impulse,
+        tangent_impulse,
+        twist_impulse,
+        max_normal_impulse: 0.0,
+        id: 0,
+        anchor_a: point - f.com_a,
+        anchor_b: point - f.com_b,
+    });
+    pair.min_separation = separation;
+}
+
+/// A pair with points between an awake body and a sleeping one wakes the sleeper:
+/// speculative points count, as the solver would otherwise treat the sleeper as static.
+fn wake_sleeper(
+    pair: &ContactPair,
+    (ha, a): (BodyHandle, &NarrowBody),
+    (hb, b): (BodyHandle, &NarrowBody),
+    wake: &mut Vec<BodyHandle>,
+) {
+    if pair.manifolds.is_empty() {
+        return;
+    }
+    if a.active && !b.active && b.sleeping_dynamic {
+        wake.push(hb);
+    }
+    if b.active && !a.active && a.sleeping_dynamic {
+        wake.push(ha);
     }
 }
 
