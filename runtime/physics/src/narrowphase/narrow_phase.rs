@@ -12,6 +12,7 @@ use super::narrow_body::NarrowBody;
 use super::narrow_stats::NarrowStats;
 use super::pair_hasher::BuildPairHasher;
 use super::raw_manifold::RawManifold;
+use super::sphere_sphere::ball_contact;
 use crate::body_handle::BodyHandle;
 use crate::body_set::BodySet;
 use crate::body_type::BodyType;
@@ -281,13 +282,7 @@ impl NarrowPhase {
             if let (Shape::Sphere(sa), Shape::Sphere(sb)) = (&ca.shape, &cb.shape) {
                 let centre_a = rot_a * ca.local_pose.translation;
                 let centre_b = d_ab + rot_b * cb.local_pose.translation;
-                let frame = BallFrame {
-                    inv_a,
-                    inv_b: rot_b.inverse(),
-                    d_ab,
-                    com_a: rot_a * ba.local_com,
-                    com_b: d_ab + rot_b * bb.local_com,
-                };
+                let frame = PointFrame::new(ba, bb, inv_a, d_ab);
                 ball_ball(
                     pair,
                     (centre_a, sa.radius),
@@ -355,9 +350,7 @@ impl NarrowPhase {
                 stats,
                 &mut self.scratch,
             );
-            let com_a = rot_a * ba.local_com;
-            let com_b = d_ab + rot_b * bb.local_com;
-            let inv_b = rot_b.inverse();
+            let frame = PointFrame::new(ba, bb, inv_a, d_ab);
             let pair = &mut self.pairs[i];
             self.old.clear();
             for m in &pair.manifolds {
@@ -371,21 +364,8 @@ impl NarrowPhase {
                 m.tangent1 = rm.normal.any_orthonormal_vector();
                 m.points.clear();
                 for rp in &rm.points {
-                    let local_a = inv_a * rp.point;
-                    let local_b = inv_b * (rp.point - d_ab);
-                    let mut cp = ContactPoint {
-                        local_a,
-                        local_b,
-                        separation: rp.separation,
-                        generated_separation: rp.separation,
-                        normal_impulse: 0.0,
-                        tangent_impulse: Vec3::ZERO,
-                        twist_impulse: 0.0,
-                        max_normal_impulse: 0.0,
-                        id: rp.id,
-                        anchor_a: rp.point - com_a,
-                        anchor_b: rp.point - com_b,
-                    };
+                    let mut cp = frame.point(rp.point, rp.separation, rp.id);
+                    let local_a = cp.local_a;
                     min_sep = min_sep.min(rp.separation);
                     // Warm start: same feature id nearby, else nearest point.
                     let mut best: Option<(f32, usize)> = None;
@@ -437,10 +417,10 @@ fn narrow_body<'a>(
     }
 }
 
-/// Where a freshly generated point goes: body-A rotation inverse, body-B rotation inverse,
-/// B's body translation relative to A's, and both centres of mass, all in world axes about
-/// A's body origin.
-struct BallFrame {
+/// What a freshly generated point is stored against: body-A rotation inverse, body-B
+/// rotation inverse, B's body translation relative to A's, and both centres of mass, all in
+/// world axes about A's body origin (the frame the collision routines work in).
+struct PointFrame {
     inv_a: glam::Quat,
     inv_b: glam::Quat,
     d_ab: Vec3,
@@ -448,27 +428,51 @@ struct BallFrame {
     com_b: Vec3,
 }
 
+impl PointFrame {
+    fn new(a: &NarrowBody, b: &NarrowBody, inv_a: glam::Quat, d_ab: Vec3) -> Self {
+        Self {
+            inv_a,
+            inv_b: b.rotation.inverse(),
+            d_ab,
+            com_a: a.rotation * a.local_com,
+            com_b: d_ab + b.rotation * b.local_com,
+        }
+    }
+
+    /// A new contact point at `point` (this frame), without impulses.
+    fn point(&self, point: Vec3, separation: f32, id: u32) -> ContactPoint {
+        ContactPoint {
+            local_a: self.inv_a * point,
+            local_b: self.inv_b * (point - self.d_ab),
+            separation,
+            generated_separation: separation,
+            normal_impulse: 0.0,
+            tangent_impulse: Vec3::ZERO,
+            twist_impulse: 0.0,
+            max_normal_impulse: 0.0,
+            id,
+            anchor_a: point - self.com_a,
+            anchor_b: point - self.com_b,
+        }
+    }
+}
+
 /// Writes the contact of two balls (centre, radius) into the pair's single manifold, keeping
 /// its impulses for warm starting (a ball pair's one point is always the same feature); no
-/// manifold beyond `margin`. The same geometry as [`super::sphere_sphere::sphere_sphere`]
+/// manifold beyond `margin`. The geometry of [`super::sphere_sphere::sphere_sphere`]
 /// without its allocation and the point matching.
 fn ball_ball(
     pair: &mut ContactPair,
     (ca, ra): (Vec3, f32),
     (cb, rb): (Vec3, f32),
     margin: f32,
-    f: &BallFrame,
+    f: &PointFrame,
 ) {
-    let d = cb - ca;
-    let dist = d.length();
-    let separation = dist - ra - rb;
-    if separation > margin {
+    let Some((n, point, separation)) = ball_contact(ca, ra, cb, rb, margin) else {
         pair.manifolds.clear();
         pair.min_separation = f32::MAX;
         return;
-    }
-    let n = if dist > 1e-9 { d / dist } else { Vec3::Y };
-    let point = ((ca + n * ra) + (cb - n * rb)) * 0.5;
+    };
     let (normal_impulse, tangent_impulse, twist_impulse) = pair
         .manifolds
         .first()
@@ -482,17 +486,10 @@ fn ball_ball(
     m.tangent1 = n.any_orthonormal_vector();
     m.points.clear();
     m.points.push(ContactPoint {
-        local_a: f.inv_a * point,
-        local_b: f.inv_b * (point - f.d_ab),
-        separation,
-        generated_separation: separation,
         normal_impulse,
         tangent_impulse,
         twist_impulse,
-        max_normal_impulse: 0.0,
-        id: 0,
-        anchor_a: point - f.com_a,
-        anchor_b: point - f.com_b,
+        ..f.point(point, separation, 0)
     });
     pair.min_separation = separation;
 }
