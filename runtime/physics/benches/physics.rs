@@ -1,6 +1,7 @@
 //! Benchmarks: ms/step for 1,000 / 10,000 bodies settled on a ground (asleep and awake),
-//! the idle cost (empty world, 10,000 sleeping bodies vs awake),
-//! the 20-row pyramid, and GJK query time. Run: `cargo bench -p onyx-physics`.
+//! the idle cost (empty world, 10,000 sleeping bodies vs awake), what locking rotation
+//! saves (a packed block of spheres free to turn vs locked), the 20-row pyramid, and GJK
+//! query time. Run: `cargo bench -p onyx-physics`.
 
 use std::hint::black_box;
 use std::time::{Duration, Instant};
@@ -9,7 +10,7 @@ use criterion::{criterion_group, criterion_main, Criterion};
 use onyx_physics::glam::{Quat, Vec3};
 use onyx_physics::narrowphase::gjk_distance;
 use onyx_physics::shape::ConvexCore;
-use onyx_physics::{ColliderDesc, PhysicsSettings, PhysicsWorld, Pose, RigidBodyDesc};
+use onyx_physics::{ColliderDesc, LockedAxes, PhysicsSettings, PhysicsWorld, Pose, RigidBodyDesc};
 
 /// `n` bodies (alternating boxes and spheres) on a grid above a ground plane, stepped
 /// until they rest.
@@ -128,7 +129,7 @@ fn glam_euler() -> onyx_physics::glam::EulerRot {
     onyx_physics::glam::EulerRot::XYZ
 }
 
-criterion_group!(benches, bench_steps, bench_idle, bench_gjk);
+criterion_group!(benches, bench_steps, bench_idle, bench_locked, bench_gjk);
 criterion_main!(benches);
 
 /// `n` boxes and spheres on a ground, stepped until every body sleeps (at most 600 steps).
@@ -171,6 +172,69 @@ fn bench_idle(c: &mut Criterion) {
         group.bench_function(name, |b| {
             b.iter(|| black_box(w.step().counters.awake_bodies))
         });
+    }
+    group.finish();
+}
+
+/// A block of 20 × 20 × 5 spheres touching their neighbours, resting on a ground, every
+/// body awake, with `locks` on each sphere.
+fn sphere_block(locks: LockedAxes) -> PhysicsWorld {
+    let s = PhysicsSettings {
+        sleep_enabled: false,
+        ..Default::default()
+    };
+    let mut w = PhysicsWorld::new(s);
+    let g = w.insert_body(RigidBodyDesc::fixed());
+    w.insert_collider(ColliderDesc::half_space(Vec3::Y), g);
+    for i in 0..2000 {
+        let (x, z, y) = (i % 20, (i / 20) % 20, i / 400);
+        let b = w.insert_body(
+            RigidBodyDesc::dynamic()
+                .translation(Vec3::new(x as f32, 0.5 + y as f32, z as f32))
+                .locked_axes(locks),
+        );
+        w.insert_collider(ColliderDesc::sphere(0.5), b);
+    }
+    for _ in 0..60 {
+        w.step();
+    }
+    w
+}
+
+/// What a scene saves by locking rotation: the same 2,000 resting spheres free to turn and
+/// with every rotation locked (no inertia, no angular rows in their contacts). The FIGURE
+/// line gives both and their ratio, measured alternately in one process.
+fn bench_locked(c: &mut Criterion) {
+    let mut group = c.benchmark_group("locked_rotation");
+    group
+        .sample_size(10)
+        .warm_up_time(Duration::from_millis(300))
+        .measurement_time(Duration::from_secs(2));
+    let mut free = sphere_block(LockedAxes::NONE);
+    let mut locked = sphere_block(LockedAxes::ALL_ROTATIONS);
+    let (mut t_free, mut t_locked) = (Duration::ZERO, Duration::ZERO);
+    for _ in 0..10 {
+        for (w, total) in [(&mut free, &mut t_free), (&mut locked, &mut t_locked)] {
+            let t = Instant::now();
+            for _ in 0..5 {
+                w.step();
+            }
+            *total += t.elapsed();
+        }
+    }
+    let ms = |d: Duration| d.as_secs_f64() * 1e3 / 50.0;
+    println!(
+        "FIGURE locked_rotation 2000 spheres: free {:.3} ms/step, locked {:.3} ms/step, \
+         locked/free {:.2} (contacts {} / {})",
+        ms(t_free),
+        ms(t_locked),
+        ms(t_locked) / ms(t_free),
+        free.last_step().counters.contacts,
+        locked.last_step().counters.contacts,
+    );
+    for (name, w) in [("free_2000", &mut free), ("locked_2000", &mut locked)] {
+        report(name, w, 10);
+        group.bench_function(name, |b| b.iter(|| black_box(w.step().counters.contacts)));
     }
     group.finish();
 }

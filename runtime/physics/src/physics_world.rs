@@ -74,12 +74,16 @@ pub(crate) struct SolverSlot {
     pub index: u32,
     /// Dynamic and in the step (the solver writes its velocity).
     pub dynamic: bool,
+    /// Can rotate during the step: dynamic with a free rotation axis, or kinematic and
+    /// spinning. Contacts between bodies that cannot are solved without angular rows.
+    pub rotates: bool,
 }
 
 impl SolverSlot {
     pub const NONE: Self = Self {
         index: 0,
         dynamic: false,
+        rotates: false,
     };
 }
 

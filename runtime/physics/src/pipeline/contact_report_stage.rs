@@ -69,6 +69,7 @@ impl PhysicsWorld {
                     let Some(&SolverSlot {
                         index,
                         dynamic: true,
+                        ..
                     }) = self.solver_slots.get(h.index() as usize)
                     else {
                         continue;

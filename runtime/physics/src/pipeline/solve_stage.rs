@@ -3,6 +3,7 @@
 use glam::{Vec3, Vec3A};
 
 use crate::body_type::BodyType;
+use crate::locked_axes::LockedAxes;
 use crate::narrowphase::narrow_phase::is_active;
 use crate::physics_world::PhysicsWorld;
 use crate::physics_world::SolverSlot;
@@ -48,16 +49,24 @@ impl PhysicsWorld {
             b.solver_index = self.solver_bodies.len() as u32;
             self.solver_handles.push(i);
             let dynamic = b.body_type == BodyType::Dynamic;
+            // A dynamic body with every rotation locked never turns: no world inertia, and
+            // its contacts skip the angular rows (unless the other body rotates).
+            let rotates = if dynamic {
+                !b.locked.contains(LockedAxes::ALL_ROTATIONS)
+            } else {
+                b.angvel != Vec3::ZERO
+            };
             if self.solver_slots.len() <= i as usize {
                 self.solver_slots.resize(i as usize + 1, SolverSlot::NONE);
             }
             self.solver_slots[i as usize] = SolverSlot {
                 index: b.solver_index,
                 dynamic,
+                rotates,
             };
             let lin_mask = b.locked.translation_mask();
             let ang_mask = b.locked.rotation_mask();
-            let inv_i = if dynamic {
+            let inv_i = if dynamic && rotates {
                 b.world_inv_inertia()
             } else {
                 glam::Mat3::ZERO
@@ -145,6 +154,7 @@ impl PhysicsWorld {
                     body_b: sb.index,
                     writes: u8::from(sa.dynamic) | u8::from(sb.dynamic) << 1,
                     count,
+                    angular: sa.rotates || sb.rotates,
                 });
             }
         }
@@ -166,6 +176,7 @@ impl PhysicsWorld {
                 body_a: r.body_a,
                 body_b: r.body_b,
                 writes: r.writes,
+                angular: r.angular,
                 normal: n.into(),
                 tangent: [t1.into(), t2.into()],
                 restitution: pair.restitution,

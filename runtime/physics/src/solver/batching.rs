@@ -10,9 +10,20 @@
 //! in the order it fills: the sweep follows the constraints' order within a few places.
 
 use super::body_state::BodyState;
-use super::contact_batch::{FaceBatch, LaneResult, PointBatch};
+use super::contact_batch::{
+    ContactBatch, FaceBatch, LaneResult, LinearFaceBatch, LinearPointBatch, ManifoldRows, Pass,
+    PointBatch,
+};
 use super::contact_constraint::{ManifoldRef, PreparedManifold};
 use super::lanes::LANES;
+
+/// Batch kinds, in solve order: angular faces, angular points, linear faces, linear points.
+const LAYOUTS: usize = 4;
+
+/// The batch kind of a manifold (an index into [`ContactBatches::open`]).
+fn layout(r: &ManifoldRef) -> usize {
+    usize::from(r.count <= 1) | usize::from(!r.angular) << 1
+}
 
 /// Batches being filled at once, per layout. More finds a free lane more often (fuller
 /// batches), fewer keeps closer to the constraints' order.
@@ -58,8 +69,28 @@ pub(crate) struct ContactBatches {
     pub four: Vec<FaceBatch>,
     /// One-point manifolds (spheres, capsule ends, vertex contacts).
     pub one: Vec<PointBatch>,
-    /// Batches being filled, oldest first, per layout (one point, four points).
-    open: [Vec<OpenBatch>; 2],
+    /// Manifolds of several points between bodies that do not rotate.
+    pub four_linear: Vec<LinearFaceBatch>,
+    /// One-point manifolds between bodies that do not rotate.
+    pub one_linear: Vec<LinearPointBatch>,
+    /// Batches being filled, oldest first, per layout (see [`layout`]).
+    open: [Vec<OpenBatch>; LAYOUTS],
+}
+
+/// Packs the lanes of one batch at the end of `out`, preparing each manifold.
+fn pack<const N: usize, M: ManifoldRows, const A: bool>(
+    out: &mut Vec<ContactBatch<N, M, A>>,
+    lanes: &[u32],
+    manifolds: &[ManifoldRef],
+    states: &[BodyState],
+    prepare: &mut impl FnMut(&ManifoldRef) -> PreparedManifold,
+) {
+    out.push(ContactBatch::EMPTY);
+    if let Some(b) = out.last_mut() {
+        for (l, &id) in lanes.iter().enumerate() {
+            b.set_lane(l, id, &prepare(&manifolds[id as usize]), states);
+        }
+    }
 }
 
 impl ContactBatches {
@@ -74,8 +105,10 @@ impl ContactBatches {
     ) {
         self.four.clear();
         self.one.clear();
+        self.four_linear.clear();
+        self.one_linear.clear();
         for (i, r) in manifolds.iter().enumerate() {
-            let layout = usize::from(r.count > 1);
+            let layout = layout(r);
             let mut bodies = [0u32; 2];
             let mut n = 0;
             if r.writes & 1 != 0 {
@@ -107,7 +140,7 @@ impl ContactBatches {
                 self.emit(layout, &full, manifolds, states, &mut prepare);
             }
         }
-        for layout in 0..2 {
+        for layout in 0..LAYOUTS {
             let open = std::mem::take(&mut self.open[layout]);
             for b in &open {
                 self.emit(layout, b, manifolds, states, &mut prepare);
@@ -126,27 +159,60 @@ impl ContactBatches {
         prepare: &mut impl FnMut(&ManifoldRef) -> PreparedManifold,
     ) {
         let lanes = &batch.lanes[..batch.len];
-        if layout == 1 {
-            self.four.push(FaceBatch::EMPTY);
-            if let Some(b) = self.four.last_mut() {
-                for (l, &id) in lanes.iter().enumerate() {
-                    b.set_lane(l, id, &prepare(&manifolds[id as usize]), states);
-                }
-            }
-        } else {
-            self.one.push(PointBatch::EMPTY);
-            if let Some(b) = self.one.last_mut() {
-                for (l, &id) in lanes.iter().enumerate() {
-                    b.set_lane(l, id, &prepare(&manifolds[id as usize]), states);
-                }
-            }
+        match layout {
+            0 => pack(&mut self.four, lanes, manifolds, states, prepare),
+            1 => pack(&mut self.one, lanes, manifolds, states, prepare),
+            2 => pack(&mut self.four_linear, lanes, manifolds, states, prepare),
+            _ => pack(&mut self.one_linear, lanes, manifolds, states, prepare),
         }
+    }
+
+    /// Re-applies last step's impulses, batch by batch.
+    pub(crate) fn warm_start(&self, states: &mut [BodyState]) {
+        self.four.iter().for_each(|b| b.warm_start(states));
+        self.one.iter().for_each(|b| b.warm_start(states));
+        self.four_linear.iter().for_each(|b| b.warm_start(states));
+        self.one_linear.iter().for_each(|b| b.warm_start(states));
+    }
+
+    /// One Gauss–Seidel pass over every batch.
+    pub(crate) fn solve(&mut self, states: &mut [BodyState], pass: Pass) {
+        self.four.iter_mut().for_each(|b| b.solve(states, pass));
+        self.one.iter_mut().for_each(|b| b.solve(states, pass));
+        self.four_linear
+            .iter_mut()
+            .for_each(|b| b.solve(states, pass));
+        self.one_linear
+            .iter_mut()
+            .for_each(|b| b.solve(states, pass));
+    }
+
+    /// Restitution after the substeps, batch by batch.
+    pub(crate) fn apply_restitution(&mut self, states: &mut [BodyState], threshold: f32) {
+        self.four
+            .iter_mut()
+            .for_each(|b| b.apply_restitution(states, threshold));
+        self.one
+            .iter_mut()
+            .for_each(|b| b.apply_restitution(states, threshold));
+        self.four_linear
+            .iter_mut()
+            .for_each(|b| b.apply_restitution(states, threshold));
+        self.one_linear
+            .iter_mut()
+            .for_each(|b| b.apply_restitution(states, threshold));
     }
 
     /// Calls `f(manifold index, impulses)` for every manifold, batch by batch.
     pub(crate) fn for_each_result(&self, mut f: impl FnMut(u32, &LaneResult)) {
         self.four.iter().for_each(|b| b.for_each_result(&mut f));
         self.one.iter().for_each(|b| b.for_each_result(&mut f));
+        self.four_linear
+            .iter()
+            .for_each(|b| b.for_each_result(&mut f));
+        self.one_linear
+            .iter()
+            .for_each(|b| b.for_each_result(&mut f));
     }
 }
 
@@ -168,6 +234,8 @@ mod tests {
             body_b,
             writes,
             count,
+            // Bodies with an index divisible by 5 cannot rotate.
+            angular: !body_a.is_multiple_of(5) || !body_b.is_multiple_of(5),
         }
     }
 
@@ -177,6 +245,7 @@ mod tests {
                 body_a: r.body_a,
                 body_b: r.body_b,
                 writes: r.writes,
+                angular: r.angular,
                 normal: Vec3A::Y,
                 tangent: [Vec3A::X, Vec3A::Z],
                 restitution: 0.0,
@@ -199,7 +268,7 @@ mod tests {
         // written), and a hub, body 1, touching every other body (79 contacts).
         for b in 2..bodies {
             constraints.push(manifold(b - 1, b, 3, 4));
-            constraints.push(manifold(0, b, 2, 1));
+            constraints.push(manifold(0, b, 2, if b % 10 == 0 { 4 } else { 1 }));
             constraints.push(manifold(1, b, 3, if b % 2 == 0 { 1 } else { 3 }));
         }
         let states = vec![BodyState::STATIC; bodies as usize];
@@ -212,12 +281,13 @@ mod tests {
         assert_eq!(prepared_count, constraints.len());
 
         let mut seen = vec![0u32; constraints.len()];
-        let mut check = |lanes: &[u32; LANES], four: bool| {
+        let mut check = |lanes: &[u32; LANES], four: bool, angular: bool| {
             let mut written = Vec::new();
             for &ci in lanes.iter().filter(|&&ci| ci != u32::MAX) {
                 seen[ci as usize] += 1;
                 let c = &constraints[ci as usize];
                 assert_eq!(c.count > 1, four, "constraint {ci} in the wrong layout");
+                assert_eq!(c.angular, angular, "constraint {ci} in the wrong kind");
                 for (bit, body) in [(1u8, c.body_a), (2, c.body_b)] {
                     if c.writes & bit != 0 {
                         assert!(!written.contains(&body), "body {body} twice in {lanes:?}");
@@ -226,8 +296,24 @@ mod tests {
                 }
             }
         };
-        batches.four.iter().for_each(|b| check(&b.constraint, true));
-        batches.one.iter().for_each(|b| check(&b.constraint, false));
+        batches
+            .four
+            .iter()
+            .for_each(|b| check(&b.constraint, true, true));
+        batches
+            .one
+            .iter()
+            .for_each(|b| check(&b.constraint, false, true));
+        batches
+            .four_linear
+            .iter()
+            .for_each(|b| check(&b.constraint, true, false));
+        batches
+            .one_linear
+            .iter()
+            .for_each(|b| check(&b.constraint, false, false));
         assert!(seen.iter().all(|&n| n == 1), "{seen:?}");
+        // Every kind was exercised.
+        assert!(!batches.four_linear.is_empty() && !batches.one_linear.is_empty());
     }
 }

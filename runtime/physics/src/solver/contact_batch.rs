@@ -13,6 +13,11 @@
 //! two to four points, which add the shared normal step and twist friction
 //! ([`FaceContact`]). The solver streams every batch once per pass, so a one-point batch
 //! does not carry what only faces use (a pile of 8,000 spheres is 30,000 manifolds).
+//!
+//! Each layout comes in two kinds: *angular* batches, and *linear* batches for manifolds
+//! between bodies that cannot rotate (every rotation axis locked, or a kinematic or static
+//! body that is not spinning). A linear batch reads and writes linear velocities only, and
+//! skips every lever-arm term: no work for rotation where rotation is locked.
 
 use glam::Vec3A;
 
@@ -20,13 +25,18 @@ use super::body_state::BodyState;
 use super::contact_constraint::PreparedManifold;
 use super::face_contact::FaceContact;
 use super::lanes::{
-    gather_deltas, gather_velocities, scatter_velocities, Velocities, F, LANES, V3,
+    gather_deltas, gather_displacements, gather_linear_velocities, gather_velocities,
+    scatter_linear_velocities, scatter_velocities, Velocities, F, LANES, V3,
 };
 
 /// Four one-point manifolds.
-pub(crate) type PointBatch = ContactBatch<1, PointContact>;
+pub(crate) type PointBatch = ContactBatch<1, PointContact, true>;
 /// Four manifolds of two to four points (unused points inactive).
-pub(crate) type FaceBatch = ContactBatch<4, FaceContact>;
+pub(crate) type FaceBatch = ContactBatch<4, FaceContact, true>;
+/// Four one-point manifolds between bodies that do not rotate.
+pub(crate) type LinearPointBatch = ContactBatch<1, PointContact, false>;
+/// Four manifolds of two to four points between bodies that do not rotate.
+pub(crate) type LinearFaceBatch = ContactBatch<4, FaceContact, false>;
 
 /// Lanes of one contact point slot.
 #[derive(Clone, Copy, Debug)]
@@ -147,9 +157,10 @@ pub(crate) struct LaneResult {
     pub twist_impulse: f32,
 }
 
-/// Four manifolds of at most `N` points as lanes, with the rows of layout `M`.
+/// Four manifolds of at most `N` points as lanes, with the rows of layout `M`; `ANGULAR`
+/// false for manifolds whose bodies do not rotate (their lever-arm rows are never read).
 #[derive(Clone, Copy, Debug)]
-pub(crate) struct ContactBatch<const N: usize, M: ManifoldRows> {
+pub(crate) struct ContactBatch<const N: usize, M: ManifoldRows, const ANGULAR: bool> {
     /// Index into the step's constraints per lane; `u32::MAX` for an empty lane.
     pub constraint: [u32; LANES],
     body_a: [u32; LANES],
@@ -199,7 +210,7 @@ pub(crate) struct Pass {
     pub max_push: f32,
 }
 
-impl<const N: usize, M: ManifoldRows> ContactBatch<N, M> {
+impl<const N: usize, M: ManifoldRows, const ANGULAR: bool> ContactBatch<N, M, ANGULAR> {
     /// A batch with four empty lanes (zero masses: solving it changes nothing).
     pub(crate) const EMPTY: Self = Self {
         constraint: [u32::MAX; LANES],
@@ -263,19 +274,23 @@ impl<const N: usize, M: ManifoldRows> ContactBatch<N, M> {
             set(&mut lanes.max_normal_impulse, l, p.max_normal_impulse);
             set(&mut lanes.normal_mass, l, p.normal_mass);
             set(&mut lanes.relative_velocity, l, p.relative_velocity);
-            lanes.rn_a.set(l, p.rn_a);
-            lanes.rn_b.set(l, p.rn_b);
-            lanes.irn_a.set(l, p.irn_a);
-            lanes.irn_b.set(l, p.irn_b);
+            if ANGULAR {
+                lanes.rn_a.set(l, p.rn_a);
+                lanes.rn_b.set(l, p.rn_b);
+                lanes.irn_a.set(l, p.irn_a);
+                lanes.irn_b.set(l, p.irn_b);
+            }
         }
         let f = &c.friction;
         set(&mut self.friction, l, f.friction);
         for k in 0..2 {
             set(&mut self.tangent_impulse[k], l, f.tangent_impulse[k]);
-            self.rt_a[k].set(l, f.rt_a[k]);
-            self.rt_b[k].set(l, f.rt_b[k]);
-            self.irt_a[k].set(l, f.irt_a[k]);
-            self.irt_b[k].set(l, f.irt_b[k]);
+            if ANGULAR {
+                self.rt_a[k].set(l, f.rt_a[k]);
+                self.rt_b[k].set(l, f.rt_b[k]);
+                self.irt_a[k].set(l, f.irt_a[k]);
+                self.irt_b[k].set(l, f.irt_b[k]);
+            }
         }
         for k in 0..3 {
             set(&mut self.tangent_mass[k], l, f.tangent_mass[k]);
@@ -309,35 +324,71 @@ impl<const N: usize, M: ManifoldRows> ContactBatch<N, M> {
         }
     }
 
+    /// The velocities of one side's bodies (angular ones stay zero in a linear batch).
+    #[inline(always)]
+    fn gather(states: &[BodyState], bodies: &[u32; LANES]) -> Velocities {
+        if ANGULAR {
+            gather_velocities(states, bodies)
+        } else {
+            Velocities {
+                v: gather_linear_velocities(states, bodies),
+                w: V3::ZERO,
+            }
+        }
+    }
+
+    /// Writes one side's velocities back (only linear ones from a linear batch).
+    #[inline(always)]
+    fn scatter(states: &mut [BodyState], bodies: &[u32; LANES], writes: u8, vel: Velocities) {
+        if ANGULAR {
+            scatter_velocities(states, bodies, writes, vel);
+        } else {
+            scatter_linear_velocities(states, bodies, writes, vel.v);
+        }
+    }
+
     /// Re-applies last step's impulses.
     pub(crate) fn warm_start(&self, states: &mut [BodyState]) {
-        let mut a = gather_velocities(states, &self.body_a);
-        let mut b = gather_velocities(states, &self.body_b);
+        let mut a = Self::gather(states, &self.body_a);
+        let mut b = Self::gather(states, &self.body_b);
         let [t1, t2] = self.tangent_impulse;
         let mut p = self.tangent[0].scale(t1) + self.tangent[1].scale(t2);
-        let mut wa = self.irt_a[0].scale(t1) + self.irt_a[1].scale(t2);
-        let mut wb = self.irt_b[0].scale(t1) + self.irt_b[1].scale(t2);
-        self.manifold.warm_start(&mut wa, &mut wb);
         for cp in &self.points {
             p += self.normal.scale(cp.normal_impulse);
-            wa += cp.irn_a.scale(cp.normal_impulse);
-            wb += cp.irn_b.scale(cp.normal_impulse);
         }
         a.v -= self.inv_mass_a * p;
-        a.w -= wa;
         b.v += self.inv_mass_b * p;
-        b.w += wb;
-        scatter_velocities(states, &self.body_a, self.writes_a, a);
-        scatter_velocities(states, &self.body_b, self.writes_b, b);
+        if ANGULAR {
+            let mut wa = self.irt_a[0].scale(t1) + self.irt_a[1].scale(t2);
+            let mut wb = self.irt_b[0].scale(t1) + self.irt_b[1].scale(t2);
+            self.manifold.warm_start(&mut wa, &mut wb);
+            for cp in &self.points {
+                wa += cp.irn_a.scale(cp.normal_impulse);
+                wb += cp.irn_b.scale(cp.normal_impulse);
+            }
+            a.w -= wa;
+            b.w += wb;
+        }
+        Self::scatter(states, &self.body_a, self.writes_a, a);
+        Self::scatter(states, &self.body_b, self.writes_b, b);
     }
 
     /// One Gauss–Seidel pass: the normal rows (shared step, then point by point), then
     /// friction at the manifold centre bounded by the new normal impulses.
     pub(crate) fn solve(&mut self, states: &mut [BodyState], pass: Pass) {
-        let mut a = gather_velocities(states, &self.body_a);
-        let mut b = gather_velocities(states, &self.body_b);
-        let (dp_a, dtheta_a) = gather_deltas(states, &self.body_a);
-        let (dp_b, dtheta_b) = gather_deltas(states, &self.body_b);
+        let mut a = Self::gather(states, &self.body_a);
+        let mut b = Self::gather(states, &self.body_b);
+        let ((dp_a, dtheta_a), (dp_b, dtheta_b)) = if ANGULAR {
+            (
+                gather_deltas(states, &self.body_a),
+                gather_deltas(states, &self.body_b),
+            )
+        } else {
+            (
+                (gather_displacements(states, &self.body_a), V3::ZERO),
+                (gather_displacements(states, &self.body_b), V3::ZERO),
+            )
+        };
         let n = self.normal;
         let zero = F::ZERO;
         let one = F::ONE;
@@ -358,8 +409,15 @@ impl<const N: usize, M: ManifoldRows> ContactBatch<N, M> {
         let mut impulse_scale = [zero; N];
         for k in 0..N {
             let cp = &self.points[k];
-            let sep = cp.base_separation + dpn + dtheta_b.dot(cp.rn_b) - dtheta_a.dot(cp.rn_a);
-            vn[k] = dvn + b.w.dot(cp.rn_b) - a.w.dot(cp.rn_a);
+            let (sep, v) = if ANGULAR {
+                (
+                    cp.base_separation + dpn + dtheta_b.dot(cp.rn_b) - dtheta_a.dot(cp.rn_a),
+                    dvn + b.w.dot(cp.rn_b) - a.w.dot(cp.rn_a),
+                )
+            } else {
+                (cp.base_separation + dpn, dvn)
+            };
+            vn[k] = v;
             let speculative = sep.simd_gt(zero);
             rows.speculative[k] = speculative;
             if pass.use_bias {
@@ -391,17 +449,21 @@ impl<const N: usize, M: ManifoldRows> ContactBatch<N, M> {
         let (mut da, mut db) = (V3::ZERO, V3::ZERO);
         for (cp, &imp) in self.points.iter().zip(&applied) {
             total += imp;
-            da += cp.irn_a.scale(imp);
-            db += cp.irn_b.scale(imp);
+            if ANGULAR {
+                da += cp.irn_a.scale(imp);
+                db += cp.irn_b.scale(imp);
+            }
         }
         let p = n.scale(total);
         a.v -= self.inv_mass_a * p;
-        a.w -= da;
         b.v += self.inv_mass_b * p;
-        b.w += db;
+        if ANGULAR {
+            a.w -= da;
+            b.w += db;
+        }
         self.solve_friction(&mut a, &mut b);
-        scatter_velocities(states, &self.body_a, self.writes_a, a);
-        scatter_velocities(states, &self.body_b, self.writes_b, b);
+        Self::scatter(states, &self.body_a, self.writes_a, a);
+        Self::scatter(states, &self.body_b, self.writes_b, b);
     }
 
     /// Coulomb friction in the contact plane (exact 2×2 mass while sticking, isotropic while
@@ -416,8 +478,14 @@ impl<const N: usize, M: ManifoldRows> ContactBatch<N, M> {
         let max_f2 = max_f * max_f;
         let [t1, t2] = self.tangent;
         let dv = b.v - a.v;
-        let vt1 = dv.dot(t1) + b.w.dot(self.rt_b[0]) - a.w.dot(self.rt_a[0]);
-        let vt2 = dv.dot(t2) + b.w.dot(self.rt_b[1]) - a.w.dot(self.rt_a[1]);
+        let (vt1, vt2) = if ANGULAR {
+            (
+                dv.dot(t1) + b.w.dot(self.rt_b[0]) - a.w.dot(self.rt_a[0]),
+                dv.dot(t2) + b.w.dot(self.rt_b[1]) - a.w.dot(self.rt_a[1]),
+            )
+        } else {
+            (dv.dot(t1), dv.dot(t2))
+        };
         let m = self.tangent_mass;
         let [old1, old2] = self.tangent_impulse;
         let stick1 = old1 - (m[0] * vt1 + m[1] * vt2);
@@ -433,11 +501,13 @@ impl<const N: usize, M: ManifoldRows> ContactBatch<N, M> {
         self.tangent_impulse = [l1, l2];
         let p = t1.scale(d1) + t2.scale(d2);
         a.v -= self.inv_mass_a * p;
-        a.w -= self.irt_a[0].scale(d1) + self.irt_a[1].scale(d2);
         b.v += self.inv_mass_b * p;
-        b.w += self.irt_b[0].scale(d1) + self.irt_b[1].scale(d2);
-        self.manifold
-            .solve_twist(&self.points, self.friction, self.normal, a, b);
+        if ANGULAR {
+            a.w -= self.irt_a[0].scale(d1) + self.irt_a[1].scale(d2);
+            b.w += self.irt_b[0].scale(d1) + self.irt_b[1].scale(d2);
+            self.manifold
+                .solve_twist(&self.points, self.friction, self.normal, a, b);
+        }
     }
 
     /// After substepping: points that approached faster than `threshold` and carried load
@@ -447,8 +517,8 @@ impl<const N: usize, M: ManifoldRows> ContactBatch<N, M> {
         if !bouncy.any() {
             return;
         }
-        let mut a = gather_velocities(states, &self.body_a);
-        let mut b = gather_velocities(states, &self.body_b);
+        let mut a = Self::gather(states, &self.body_a);
+        let mut b = Self::gather(states, &self.body_b);
         let n = self.normal;
         let neg_threshold = F::splat(-threshold);
         for cp in &mut self.points {
@@ -458,7 +528,11 @@ impl<const N: usize, M: ManifoldRows> ContactBatch<N, M> {
             if !bounce.any() {
                 continue;
             }
-            let vn = (b.v - a.v).dot(n) + b.w.dot(cp.rn_b) - a.w.dot(cp.rn_a);
+            let vn = if ANGULAR {
+                (b.v - a.v).dot(n) + b.w.dot(cp.rn_b) - a.w.dot(cp.rn_a)
+            } else {
+                (b.v - a.v).dot(n)
+            };
             let imp = -cp.normal_mass * (vn + self.restitution * cp.relative_velocity);
             let new = fmax(F::ZERO, cp.normal_impulse + imp);
             let imp = bounce.select(new - cp.normal_impulse, F::ZERO);
@@ -467,11 +541,13 @@ impl<const N: usize, M: ManifoldRows> ContactBatch<N, M> {
                 bounce.select(fmax(cp.max_normal_impulse, imp), cp.max_normal_impulse);
             let p = n.scale(imp);
             a.v -= self.inv_mass_a * p;
-            a.w -= cp.irn_a.scale(imp);
             b.v += self.inv_mass_b * p;
-            b.w += cp.irn_b.scale(imp);
+            if ANGULAR {
+                a.w -= cp.irn_a.scale(imp);
+                b.w += cp.irn_b.scale(imp);
+            }
         }
-        scatter_velocities(states, &self.body_a, self.writes_a, a);
-        scatter_velocities(states, &self.body_b, self.writes_b, b);
+        Self::scatter(states, &self.body_a, self.writes_a, a);
+        Self::scatter(states, &self.body_b, self.writes_b, b);
     }
 }

@@ -108,6 +108,8 @@ pub(crate) struct ManifoldRef {
     pub writes: u8,
     /// Points, 1–4.
     pub count: u8,
+    /// One of the bodies can rotate (else the manifold goes to a linear batch).
+    pub angular: bool,
 }
 
 /// A constraint and its points, prepared for one step (lives on the stack while a batch
@@ -125,6 +127,8 @@ pub(crate) struct ContactConstraint {
     pub body_b: u32,
     /// Bit 0: the solver writes body A's velocities (it is dynamic); bit 1: body B's.
     pub writes: u8,
+    /// One of the bodies can rotate; when neither can, the lever-arm terms stay zero.
+    pub angular: bool,
     pub normal: Vec3A,
     pub tangent: [Vec3A; 2],
     pub restitution: f32,
@@ -202,19 +206,24 @@ pub(crate) fn prepare(
     }
     ca *= inv_count;
     cb *= inv_count;
+    let angular = c.angular;
     for (cp, &(ra, rb)) in points.iter_mut().zip(anchors) {
-        cp.rn_a = ra.cross(n);
-        cp.rn_b = rb.cross(n);
-        cp.irn_a = a.inv_i * cp.rn_a;
-        cp.irn_b = b.inv_i * cp.rn_b;
-        // `J M⁻¹ Jᵀ` from the Jacobians just computed (the same products, not recomputed).
-        let k = n.dot(a.inv_mass * n)
-            + n.dot(b.inv_mass * n)
-            + cp.rn_a.dot(cp.irn_a)
-            + cp.rn_b.dot(cp.irn_b);
+        let (k, dv) = if angular {
+            cp.rn_a = ra.cross(n);
+            cp.rn_b = rb.cross(n);
+            cp.irn_a = a.inv_i * cp.rn_a;
+            cp.irn_b = b.inv_i * cp.rn_b;
+            // `J M⁻¹ Jᵀ` from the Jacobians just computed (the same products, not recomputed).
+            let k = n.dot(a.inv_mass * n)
+                + n.dot(b.inv_mass * n)
+                + cp.rn_a.dot(cp.irn_a)
+                + cp.rn_b.dot(cp.irn_b);
+            (k, sb.v + sb.w.cross(rb) - sa.v - sa.w.cross(ra))
+        } else {
+            (n.dot(a.inv_mass * n) + n.dot(b.inv_mass * n), sb.v - sa.v)
+        };
         cp.inv_normal_mass = k;
         cp.normal_mass = if k > 0.0 { 1.0 / k } else { 0.0 };
-        let dv = sb.v + sb.w.cross(rb) - sa.v - sa.w.cross(ra);
         cp.relative_velocity = dv.dot(n);
         let off = ra - ca;
         cp.twist_lever = (off - n * off.dot(n)).length();
@@ -240,18 +249,26 @@ pub(crate) fn prepare(
         block.patch = block.patch_k > 0.0;
     }
     let f = &mut c.friction;
-    for k in 0..2 {
-        f.rt_a[k] = ca.cross(c.tangent[k]);
-        f.rt_b[k] = cb.cross(c.tangent[k]);
-        f.irt_a[k] = a.inv_i * f.rt_a[k];
-        f.irt_b[k] = b.inv_i * f.rt_b[k];
+    if angular {
+        for k in 0..2 {
+            f.rt_a[k] = ca.cross(c.tangent[k]);
+            f.rt_b[k] = cb.cross(c.tangent[k]);
+            f.irt_a[k] = a.inv_i * f.rt_a[k];
+            f.irt_b[k] = b.inv_i * f.rt_b[k];
+        }
     }
     (f.tangent_mass, f.slide_mass) = friction_masses(a, b, f, c.tangent);
-    f.in_a = a.inv_i * n;
-    f.in_b = b.inv_i * n;
-    let kt = n.dot(f.in_a) + n.dot(f.in_b);
-    f.twist_mass = if kt > 0.0 { 1.0 / kt } else { 0.0 };
-    let dv = sb.v + sb.w.cross(cb) - sa.v - sa.w.cross(ca);
+    if angular {
+        f.in_a = a.inv_i * n;
+        f.in_b = b.inv_i * n;
+        let kt = n.dot(f.in_a) + n.dot(f.in_b);
+        f.twist_mass = if kt > 0.0 { 1.0 / kt } else { 0.0 };
+    }
+    let dv = if angular {
+        sb.v + sb.w.cross(cb) - sa.v - sa.w.cross(ca)
+    } else {
+        sb.v - sa.v
+    };
     let slip = (dv - n * dv.dot(n)).length();
     f.friction = if slip < static_speed {
         friction_s

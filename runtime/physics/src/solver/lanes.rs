@@ -160,6 +160,34 @@ pub(crate) fn gather_deltas(states: &[BodyState], bodies: &[u32; LANES]) -> (V3,
     )
 }
 
+/// Reads the linear velocities of `bodies[l]` into lane `l` (bodies that do not rotate).
+#[inline(always)]
+pub(crate) fn gather_linear_velocities(states: &[BodyState], bodies: &[u32; LANES]) -> V3 {
+    V3::from_lanes(bodies.map(|i| states[i as usize].v))
+}
+
+/// Reads the displacements `dp` of `bodies[l]` into lane `l` (bodies that do not rotate).
+#[inline(always)]
+pub(crate) fn gather_displacements(states: &[BodyState], bodies: &[u32; LANES]) -> V3 {
+    V3::from_lanes(bodies.map(|i| states[i as usize].dp))
+}
+
+/// [`scatter_velocities`] for bodies that do not rotate: only the linear velocity.
+#[inline(always)]
+pub(crate) fn scatter_linear_velocities(
+    states: &mut [BodyState],
+    bodies: &[u32; LANES],
+    writes: u8,
+    v: V3,
+) {
+    let v = v.to_lanes();
+    for l in 0..LANES {
+        if writes & (1 << l) != 0 {
+            states[bodies[l] as usize].v = v[l];
+        }
+    }
+}
+
 /// Writes lane `l` back to `bodies[l]` where bit `l` of `writes` is set (dynamic bodies; the
 /// others' velocities do not change, and several lanes may share them).
 #[inline(always)]

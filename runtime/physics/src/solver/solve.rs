@@ -39,25 +39,18 @@ pub(crate) fn solve_substeps(
         use_bias: false,
         ..solve_pass
     };
-    let ContactBatches { four, one, .. } = batches;
     for _ in 0..substeps {
         integrate_velocities(bodies, states, h, p);
-        four.iter().for_each(|b| b.warm_start(states));
-        one.iter().for_each(|b| b.warm_start(states));
+        batches.warm_start(states);
         for _ in 0..p.iterations.max(1) {
-            four.iter_mut().for_each(|b| b.solve(states, solve_pass));
-            one.iter_mut().for_each(|b| b.solve(states, solve_pass));
+            batches.solve(states, solve_pass);
         }
         integrate_positions(bodies, states, h);
         for _ in 0..p.relax_iterations {
-            four.iter_mut().for_each(|b| b.solve(states, relax_pass));
-            one.iter_mut().for_each(|b| b.solve(states, relax_pass));
+            batches.solve(states, relax_pass);
         }
     }
-    four.iter_mut()
-        .for_each(|b| b.apply_restitution(states, p.restitution_threshold));
-    one.iter_mut()
-        .for_each(|b| b.apply_restitution(states, p.restitution_threshold));
+    batches.apply_restitution(states, p.restitution_threshold);
 }
 
 fn integrate_velocities(bodies: &[SolverBody], states: &mut [BodyState], h: f32, p: &SolveParams) {
