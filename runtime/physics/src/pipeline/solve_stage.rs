@@ -13,6 +13,7 @@ use crate::solver::contact_constraint::{
     prepare, ConstraintPoint, ContactConstraint, FrictionPart, ManifoldRef, NormalBlock,
     PreparedManifold,
 };
+use crate::solver::noise::matrix_without_noise;
 use crate::solver::solve::{solve_substeps, SolveParams};
 use crate::solver::solver_body::SolverBody;
 use crate::solver::Softness;
@@ -67,7 +68,7 @@ impl PhysicsWorld {
             let lin_mask = b.locked.translation_mask();
             let ang_mask = b.locked.rotation_mask();
             let inv_i = if dynamic && rotates {
-                b.world_inv_inertia()
+                matrix_without_noise(b.world_inv_inertia())
             } else {
                 glam::Mat3::ZERO
             };

@@ -8,7 +8,7 @@ use glam::Vec3;
 use super::ccd::sweep_body;
 use crate::body_type::BodyType;
 use crate::physics_world::PhysicsWorld;
-use crate::pose::Pose;
+use crate::pose::{unit_rotation, Pose};
 
 impl PhysicsWorld {
     pub(crate) fn writeback_stage(&mut self) {
@@ -24,7 +24,7 @@ impl PhysicsWorld {
                 continue;
             };
             let com0 = b.pose.transform_point(b.mass.local_com);
-            let rot = (sb.dq * sb.q0).normalize();
+            let rot = unit_rotation(sb.dq * sb.q0);
             let com = com0 + Vec3::from(st.dp);
             let finite = com.is_finite() && rot.is_finite() && st.v.is_finite() && st.w.is_finite();
             if !finite {

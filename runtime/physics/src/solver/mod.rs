@@ -6,6 +6,7 @@ pub(crate) mod contact_batch;
 pub(crate) mod contact_constraint;
 pub(crate) mod face_contact;
 pub(crate) mod lanes;
+pub(crate) mod noise;
 pub mod softness;
 pub(crate) mod solve;
 pub(crate) mod solver_body;

@@ -7,6 +7,7 @@ use super::batching::ContactBatches;
 use super::body_state::BodyState;
 use super::contact_batch::Pass;
 use super::solver_body::SolverBody;
+use crate::pose::unit_rotation;
 
 /// Parameters of one solver run (derived from `PhysicsSettings`).
 #[derive(Clone, Copy, Debug)]
@@ -86,13 +87,12 @@ fn integrate_positions(bodies: &mut [SolverBody], states: &mut [BodyState], h: f
         let q_old = b.dq * b.q0;
         let dq = b.dq;
         let spin = Quat::from_xyzw(w.x, w.y, w.z, 0.0) * dq;
-        b.dq = Quat::from_xyzw(
+        b.dq = unit_rotation(Quat::from_xyzw(
             dq.x + 0.5 * h * spin.x,
             dq.y + 0.5 * h * spin.y,
             dq.z + 0.5 * h * spin.z,
             dq.w + 0.5 * h * spin.w,
-        )
-        .normalize();
+        ));
         if b.gyro {
             // Free rotation keeps world angular momentum L = R I Rᵀ ω.
             let q_new = b.dq * b.q0;
