@@ -11,8 +11,8 @@
 
 use super::body_state::BodyState;
 use super::contact_batch::{
-    ContactBatch, FaceBatch, LaneResult, LinearFaceBatch, LinearPointBatch, ManifoldRows, Pass,
-    PointBatch,
+    ContactBatch, FaceBatch, LaneResult, Levers, LinearFaceBatch, LinearPointBatch, ManifoldRows,
+    Pass, PointBatch,
 };
 use super::contact_constraint::{ManifoldRef, PreparedManifold};
 use super::lanes::LANES;
@@ -78,8 +78,8 @@ pub(crate) struct ContactBatches {
 }
 
 /// Packs the lanes of one batch at the end of `out`, preparing each manifold.
-fn pack<const N: usize, M: ManifoldRows, const A: bool>(
-    out: &mut Vec<ContactBatch<N, M, A>>,
+fn pack<const N: usize, M: ManifoldRows, L: Levers<N>>(
+    out: &mut Vec<ContactBatch<N, M, L>>,
     lanes: &[u32],
     manifolds: &[ManifoldRef],
     states: &[BodyState],

@@ -14,10 +14,12 @@
 //! ([`FaceContact`]). The solver streams every batch once per pass, so a one-point batch
 //! does not carry what only faces use (a pile of 8,000 spheres is 30,000 manifolds).
 //!
-//! Each layout comes in two kinds: *angular* batches, and *linear* batches for manifolds
-//! between bodies that cannot rotate (every rotation axis locked, or a kinematic or static
-//! body that is not spinning). A linear batch reads and writes linear velocities only, and
-//! skips every lever-arm term: no work for rotation where rotation is locked.
+//! Each layout comes in two kinds ([`Levers`]): *angular* batches, which carry every point's
+//! and the friction's lever arms ([`AngularRows`]), and *linear* batches ([`NoRotation`])
+//! for manifolds between bodies that cannot rotate (every rotation axis locked, or a
+//! kinematic or static body that is not spinning). A linear batch has no lever arms to
+//! stream, reads and writes linear velocities only and skips every angular term: no work
+//! for rotation where rotation is locked.
 
 use glam::Vec3A;
 
@@ -30,13 +32,13 @@ use super::lanes::{
 };
 
 /// Four one-point manifolds.
-pub(crate) type PointBatch = ContactBatch<1, PointContact, true>;
+pub(crate) type PointBatch = ContactBatch<1, PointContact, AngularRows<1>>;
 /// Four manifolds of two to four points (unused points inactive).
-pub(crate) type FaceBatch = ContactBatch<4, FaceContact, true>;
+pub(crate) type FaceBatch = ContactBatch<4, FaceContact, AngularRows<4>>;
 /// Four one-point manifolds between bodies that do not rotate.
-pub(crate) type LinearPointBatch = ContactBatch<1, PointContact, false>;
+pub(crate) type LinearPointBatch = ContactBatch<1, PointContact, NoRotation>;
 /// Four manifolds of two to four points between bodies that do not rotate.
-pub(crate) type LinearFaceBatch = ContactBatch<4, FaceContact, false>;
+pub(crate) type LinearFaceBatch = ContactBatch<4, FaceContact, NoRotation>;
 
 /// Lanes of one contact point slot.
 #[derive(Clone, Copy, Debug)]
@@ -46,10 +48,6 @@ pub(crate) struct PointLanes {
     pub max_normal_impulse: F,
     pub normal_mass: F,
     pub relative_velocity: F,
-    pub rn_a: V3,
-    pub rn_b: V3,
-    pub irn_a: V3,
-    pub irn_b: V3,
 }
 
 impl PointLanes {
@@ -59,11 +57,87 @@ impl PointLanes {
         max_normal_impulse: F::ZERO,
         normal_mass: F::ZERO,
         relative_velocity: F::ZERO,
+    };
+}
+
+/// Lever arms of one point slot: the angular Jacobians `r × n` of A and B, and the same
+/// through each body's inverse inertia.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct PointLevers {
+    pub rn_a: V3,
+    pub rn_b: V3,
+    pub irn_a: V3,
+    pub irn_b: V3,
+}
+
+impl PointLevers {
+    const EMPTY: Self = Self {
         rn_a: V3::ZERO,
         rn_b: V3::ZERO,
         irn_a: V3::ZERO,
         irn_b: V3::ZERO,
     };
+}
+
+/// What rotation adds to a batch of manifolds with `N` point slots: each point's lever arms
+/// and the friction's at the manifold centre (`r × t1`, `r × t2`, and through the inverse
+/// inertia).
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct AngularRows<const N: usize> {
+    points: [PointLevers; N],
+    rt_a: [V3; 2],
+    rt_b: [V3; 2],
+    irt_a: [V3; 2],
+    irt_b: [V3; 2],
+}
+
+/// Manifolds whose bodies cannot rotate carry no lever arms.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct NoRotation;
+
+/// The lever-arm storage of a batch: [`AngularRows`] or [`NoRotation`].
+pub(crate) trait Levers<const N: usize>: Copy + std::fmt::Debug {
+    /// Four empty lanes.
+    const EMPTY: Self;
+    /// The bodies may rotate (angular velocities are read and written).
+    const ANGULAR: bool;
+    /// The lever arms, or `None` for bodies that cannot rotate (known at compile time, so
+    /// every angular term of a linear batch compiles away).
+    fn rows(&self) -> Option<&AngularRows<N>>;
+    /// The same, to write.
+    fn rows_mut(&mut self) -> Option<&mut AngularRows<N>>;
+}
+
+impl<const N: usize> Levers<N> for AngularRows<N> {
+    const ANGULAR: bool = true;
+    const EMPTY: Self = Self {
+        points: [PointLevers::EMPTY; N],
+        rt_a: [V3::ZERO; 2],
+        rt_b: [V3::ZERO; 2],
+        irt_a: [V3::ZERO; 2],
+        irt_b: [V3::ZERO; 2],
+    };
+    #[inline(always)]
+    fn rows(&self) -> Option<&AngularRows<N>> {
+        Some(self)
+    }
+    #[inline(always)]
+    fn rows_mut(&mut self) -> Option<&mut AngularRows<N>> {
+        Some(self)
+    }
+}
+
+impl<const N: usize> Levers<N> for NoRotation {
+    const ANGULAR: bool = false;
+    const EMPTY: Self = Self;
+    #[inline(always)]
+    fn rows(&self) -> Option<&AngularRows<N>> {
+        None
+    }
+    #[inline(always)]
+    fn rows_mut(&mut self) -> Option<&mut AngularRows<N>> {
+        None
+    }
 }
 
 /// Each point's normal row in one pass: where it is speculative (separated: rigid, may not
@@ -157,10 +231,10 @@ pub(crate) struct LaneResult {
     pub twist_impulse: f32,
 }
 
-/// Four manifolds of at most `N` points as lanes, with the rows of layout `M`; `ANGULAR`
-/// false for manifolds whose bodies do not rotate (their lever-arm rows are never read).
+/// Four manifolds of at most `N` points as lanes, with the rows of layout `M` and the lever
+/// arms `L` (none for manifolds whose bodies do not rotate).
 #[derive(Clone, Copy, Debug)]
-pub(crate) struct ContactBatch<const N: usize, M: ManifoldRows, const ANGULAR: bool> {
+pub(crate) struct ContactBatch<const N: usize, M: ManifoldRows, L: Levers<N>> {
     /// Index into the step's constraints per lane; `u32::MAX` for an empty lane.
     pub constraint: [u32; LANES],
     body_a: [u32; LANES],
@@ -181,10 +255,7 @@ pub(crate) struct ContactBatch<const N: usize, M: ManifoldRows, const ANGULAR: b
     tangent_impulse: [F; 2],
     tangent_mass: [F; 3],
     slide_mass: F,
-    rt_a: [V3; 2],
-    rt_b: [V3; 2],
-    irt_a: [V3; 2],
-    irt_b: [V3; 2],
+    levers: L,
     manifold: M,
 }
 
@@ -210,7 +281,7 @@ pub(crate) struct Pass {
     pub max_push: f32,
 }
 
-impl<const N: usize, M: ManifoldRows, const ANGULAR: bool> ContactBatch<N, M, ANGULAR> {
+impl<const N: usize, M: ManifoldRows, L: Levers<N>> ContactBatch<N, M, L> {
     /// A batch with four empty lanes (zero masses: solving it changes nothing).
     pub(crate) const EMPTY: Self = Self {
         constraint: [u32::MAX; LANES],
@@ -231,10 +302,7 @@ impl<const N: usize, M: ManifoldRows, const ANGULAR: bool> ContactBatch<N, M, AN
         tangent_impulse: [F::ZERO; 2],
         tangent_mass: [F::ZERO; 3],
         slide_mass: F::ZERO,
-        rt_a: [V3::ZERO; 2],
-        rt_b: [V3::ZERO; 2],
-        irt_a: [V3::ZERO; 2],
-        irt_b: [V3::ZERO; 2],
+        levers: L::EMPTY,
         manifold: M::EMPTY,
     };
 
@@ -263,33 +331,31 @@ impl<const N: usize, M: ManifoldRows, const ANGULAR: bool> ContactBatch<N, M, AN
         set(&mut self.mass_scale, l, c.softness.mass_scale);
         set(&mut self.impulse_scale, l, c.softness.impulse_scale);
         set(&mut self.restitution, l, c.restitution);
-        for (lanes, p) in self
-            .points
-            .iter_mut()
-            .zip(&prepared.points)
-            .take(usize::from(c.count))
-        {
+        let count = usize::from(c.count);
+        for (lanes, p) in self.points.iter_mut().zip(&prepared.points).take(count) {
             set(&mut lanes.base_separation, l, p.base_separation);
             set(&mut lanes.normal_impulse, l, p.normal_impulse);
             set(&mut lanes.max_normal_impulse, l, p.max_normal_impulse);
             set(&mut lanes.normal_mass, l, p.normal_mass);
             set(&mut lanes.relative_velocity, l, p.relative_velocity);
-            if ANGULAR {
-                lanes.rn_a.set(l, p.rn_a);
-                lanes.rn_b.set(l, p.rn_b);
-                lanes.irn_a.set(l, p.irn_a);
-                lanes.irn_b.set(l, p.irn_b);
-            }
         }
         let f = &c.friction;
         set(&mut self.friction, l, f.friction);
         for k in 0..2 {
             set(&mut self.tangent_impulse[k], l, f.tangent_impulse[k]);
-            if ANGULAR {
-                self.rt_a[k].set(l, f.rt_a[k]);
-                self.rt_b[k].set(l, f.rt_b[k]);
-                self.irt_a[k].set(l, f.irt_a[k]);
-                self.irt_b[k].set(l, f.irt_b[k]);
+        }
+        if let Some(rows) = self.levers.rows_mut() {
+            for (lanes, p) in rows.points.iter_mut().zip(&prepared.points).take(count) {
+                lanes.rn_a.set(l, p.rn_a);
+                lanes.rn_b.set(l, p.rn_b);
+                lanes.irn_a.set(l, p.irn_a);
+                lanes.irn_b.set(l, p.irn_b);
+            }
+            for k in 0..2 {
+                rows.rt_a[k].set(l, f.rt_a[k]);
+                rows.rt_b[k].set(l, f.rt_b[k]);
+                rows.irt_a[k].set(l, f.irt_a[k]);
+                rows.irt_b[k].set(l, f.irt_b[k]);
             }
         }
         for k in 0..3 {
@@ -327,7 +393,7 @@ impl<const N: usize, M: ManifoldRows, const ANGULAR: bool> ContactBatch<N, M, AN
     /// The velocities of one side's bodies (angular ones stay zero in a linear batch).
     #[inline(always)]
     fn gather(states: &[BodyState], bodies: &[u32; LANES]) -> Velocities {
-        if ANGULAR {
+        if L::ANGULAR {
             gather_velocities(states, bodies)
         } else {
             Velocities {
@@ -340,7 +406,7 @@ impl<const N: usize, M: ManifoldRows, const ANGULAR: bool> ContactBatch<N, M, AN
     /// Writes one side's velocities back (only linear ones from a linear batch).
     #[inline(always)]
     fn scatter(states: &mut [BodyState], bodies: &[u32; LANES], writes: u8, vel: Velocities) {
-        if ANGULAR {
+        if L::ANGULAR {
             scatter_velocities(states, bodies, writes, vel);
         } else {
             scatter_linear_velocities(states, bodies, writes, vel.v);
@@ -358,13 +424,13 @@ impl<const N: usize, M: ManifoldRows, const ANGULAR: bool> ContactBatch<N, M, AN
         }
         a.v -= self.inv_mass_a * p;
         b.v += self.inv_mass_b * p;
-        if ANGULAR {
-            let mut wa = self.irt_a[0].scale(t1) + self.irt_a[1].scale(t2);
-            let mut wb = self.irt_b[0].scale(t1) + self.irt_b[1].scale(t2);
+        if let Some(rows) = self.levers.rows() {
+            let mut wa = rows.irt_a[0].scale(t1) + rows.irt_a[1].scale(t2);
+            let mut wb = rows.irt_b[0].scale(t1) + rows.irt_b[1].scale(t2);
             self.manifold.warm_start(&mut wa, &mut wb);
-            for cp in &self.points {
-                wa += cp.irn_a.scale(cp.normal_impulse);
-                wb += cp.irn_b.scale(cp.normal_impulse);
+            for (cp, lever) in self.points.iter().zip(&rows.points) {
+                wa += lever.irn_a.scale(cp.normal_impulse);
+                wb += lever.irn_b.scale(cp.normal_impulse);
             }
             a.w -= wa;
             b.w += wb;
@@ -378,7 +444,7 @@ impl<const N: usize, M: ManifoldRows, const ANGULAR: bool> ContactBatch<N, M, AN
     pub(crate) fn solve(&mut self, states: &mut [BodyState], pass: Pass) {
         let mut a = Self::gather(states, &self.body_a);
         let mut b = Self::gather(states, &self.body_b);
-        let ((dp_a, dtheta_a), (dp_b, dtheta_b)) = if ANGULAR {
+        let ((dp_a, dtheta_a), (dp_b, dtheta_b)) = if L::ANGULAR {
             (
                 gather_deltas(states, &self.body_a),
                 gather_deltas(states, &self.body_b),
@@ -409,13 +475,16 @@ impl<const N: usize, M: ManifoldRows, const ANGULAR: bool> ContactBatch<N, M, AN
         let mut impulse_scale = [zero; N];
         for k in 0..N {
             let cp = &self.points[k];
-            let (sep, v) = if ANGULAR {
-                (
-                    cp.base_separation + dpn + dtheta_b.dot(cp.rn_b) - dtheta_a.dot(cp.rn_a),
-                    dvn + b.w.dot(cp.rn_b) - a.w.dot(cp.rn_a),
-                )
-            } else {
-                (cp.base_separation + dpn, dvn)
+            let (sep, v) = match self.levers.rows() {
+                Some(rows) => {
+                    let lever = &rows.points[k];
+                    (
+                        cp.base_separation + dpn + dtheta_b.dot(lever.rn_b)
+                            - dtheta_a.dot(lever.rn_a),
+                        dvn + b.w.dot(lever.rn_b) - a.w.dot(lever.rn_a),
+                    )
+                }
+                None => (cp.base_separation + dpn, dvn),
             };
             vn[k] = v;
             let speculative = sep.simd_gt(zero);
@@ -447,17 +516,17 @@ impl<const N: usize, M: ManifoldRows, const ANGULAR: bool> ContactBatch<N, M, AN
         }
         let mut total = zero;
         let (mut da, mut db) = (V3::ZERO, V3::ZERO);
-        for (cp, &imp) in self.points.iter().zip(&applied) {
+        for (k, &imp) in applied.iter().enumerate() {
             total += imp;
-            if ANGULAR {
-                da += cp.irn_a.scale(imp);
-                db += cp.irn_b.scale(imp);
+            if let Some(rows) = self.levers.rows() {
+                da += rows.points[k].irn_a.scale(imp);
+                db += rows.points[k].irn_b.scale(imp);
             }
         }
         let p = n.scale(total);
         a.v -= self.inv_mass_a * p;
         b.v += self.inv_mass_b * p;
-        if ANGULAR {
+        if L::ANGULAR {
             a.w -= da;
             b.w += db;
         }
@@ -478,13 +547,12 @@ impl<const N: usize, M: ManifoldRows, const ANGULAR: bool> ContactBatch<N, M, AN
         let max_f2 = max_f * max_f;
         let [t1, t2] = self.tangent;
         let dv = b.v - a.v;
-        let (vt1, vt2) = if ANGULAR {
-            (
-                dv.dot(t1) + b.w.dot(self.rt_b[0]) - a.w.dot(self.rt_a[0]),
-                dv.dot(t2) + b.w.dot(self.rt_b[1]) - a.w.dot(self.rt_a[1]),
-            )
-        } else {
-            (dv.dot(t1), dv.dot(t2))
+        let (vt1, vt2) = match self.levers.rows() {
+            Some(rows) => (
+                dv.dot(t1) + b.w.dot(rows.rt_b[0]) - a.w.dot(rows.rt_a[0]),
+                dv.dot(t2) + b.w.dot(rows.rt_b[1]) - a.w.dot(rows.rt_a[1]),
+            ),
+            None => (dv.dot(t1), dv.dot(t2)),
         };
         let m = self.tangent_mass;
         let [old1, old2] = self.tangent_impulse;
@@ -502,9 +570,9 @@ impl<const N: usize, M: ManifoldRows, const ANGULAR: bool> ContactBatch<N, M, AN
         let p = t1.scale(d1) + t2.scale(d2);
         a.v -= self.inv_mass_a * p;
         b.v += self.inv_mass_b * p;
-        if ANGULAR {
-            a.w -= self.irt_a[0].scale(d1) + self.irt_a[1].scale(d2);
-            b.w += self.irt_b[0].scale(d1) + self.irt_b[1].scale(d2);
+        if let Some(rows) = self.levers.rows() {
+            a.w -= rows.irt_a[0].scale(d1) + rows.irt_a[1].scale(d2);
+            b.w += rows.irt_b[0].scale(d1) + rows.irt_b[1].scale(d2);
             self.manifold
                 .solve_twist(&self.points, self.friction, self.normal, a, b);
         }
@@ -521,17 +589,17 @@ impl<const N: usize, M: ManifoldRows, const ANGULAR: bool> ContactBatch<N, M, AN
         let mut b = Self::gather(states, &self.body_b);
         let n = self.normal;
         let neg_threshold = F::splat(-threshold);
-        for cp in &mut self.points {
+        for (k, cp) in self.points.iter_mut().enumerate() {
             let fast = cp.relative_velocity.simd_le(neg_threshold);
             let loaded = cp.max_normal_impulse.simd_gt(F::ZERO);
             let bounce = bouncy & fast & loaded;
             if !bounce.any() {
                 continue;
             }
-            let vn = if ANGULAR {
-                (b.v - a.v).dot(n) + b.w.dot(cp.rn_b) - a.w.dot(cp.rn_a)
-            } else {
-                (b.v - a.v).dot(n)
+            let lever = self.levers.rows().map(|rows| &rows.points[k]);
+            let vn = match lever {
+                Some(lever) => (b.v - a.v).dot(n) + b.w.dot(lever.rn_b) - a.w.dot(lever.rn_a),
+                None => (b.v - a.v).dot(n),
             };
             let imp = -cp.normal_mass * (vn + self.restitution * cp.relative_velocity);
             let new = fmax(F::ZERO, cp.normal_impulse + imp);
@@ -542,9 +610,9 @@ impl<const N: usize, M: ManifoldRows, const ANGULAR: bool> ContactBatch<N, M, AN
             let p = n.scale(imp);
             a.v -= self.inv_mass_a * p;
             b.v += self.inv_mass_b * p;
-            if ANGULAR {
-                a.w -= cp.irn_a.scale(imp);
-                b.w += cp.irn_b.scale(imp);
+            if let Some(lever) = lever {
+                a.w -= lever.irn_a.scale(imp);
+                b.w += lever.irn_b.scale(imp);
             }
         }
         Self::scatter(states, &self.body_a, self.writes_a, a);
