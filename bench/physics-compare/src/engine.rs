@@ -4,6 +4,54 @@
 use onyx_physics::glam::{Quat, Vec3};
 use rapier3d::prelude as rp;
 
+/// What the narrowphase's iterative queries did over a run.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct NarrowphaseTally {
+    /// GJK runs.
+    pub gjk_runs: u64,
+    /// GJK iterations summed.
+    pub gjk_iterations: u64,
+    /// GJK runs that hit their iteration cap.
+    pub gjk_not_converged: u64,
+    /// EPA runs.
+    pub epa_runs: u64,
+    /// EPA iterations summed.
+    pub epa_iterations: u64,
+    /// EPA runs that failed or met a flat Minkowski difference (a fallback was used).
+    pub epa_failures: u64,
+}
+
+impl NarrowphaseTally {
+    /// Runs that did not converge or failed.
+    #[must_use]
+    pub fn failures(&self) -> u64 {
+        self.gjk_not_converged + self.epa_failures
+    }
+}
+
+impl std::fmt::Display for NarrowphaseTally {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        let mean = |iters: u64, runs: u64| {
+            if runs == 0 {
+                0.0
+            } else {
+                iters as f64 / runs as f64
+            }
+        };
+        write!(
+            f,
+            "GJK {} runs, {:.2} iterations each, {} not converged; EPA {} runs, {:.2} \
+             iterations each, {} failed",
+            self.gjk_runs,
+            mean(self.gjk_iterations, self.gjk_runs),
+            self.gjk_not_converged,
+            self.epa_runs,
+            mean(self.epa_iterations, self.epa_runs),
+            self.epa_failures
+        )
+    }
+}
+
 /// Which engine.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
 pub enum EngineKind {
@@ -204,9 +252,9 @@ pub trait Engine {
     fn mass(&self, id: BodyId) -> f32;
     /// Number of bodies.
     fn len(&self) -> usize;
-    /// Narrowphase failures so far (GJK runs that hit their cap + EPA runs that failed),
-    /// where the engine reports them; `None` otherwise.
-    fn narrowphase_failures(&self) -> Option<u64> {
+    /// GJK and EPA runs, iterations and failures so far, where the engine reports them;
+    /// `None` otherwise (rapier does not).
+    fn narrowphase_tally(&self) -> Option<NarrowphaseTally> {
         None
     }
     /// Time per stage summed over the steps so far, `(stage, seconds)`, where the engine
@@ -224,7 +272,7 @@ pub trait Engine {
 pub struct OnyxEngine {
     world: onyx_physics::PhysicsWorld,
     bodies: Vec<onyx_physics::BodyHandle>,
-    failures: u64,
+    tally: NarrowphaseTally,
     /// Broadphase, narrowphase, solve, integrate, ccd, sleep: seconds summed over steps.
     stages: [f64; 6],
 }
@@ -242,7 +290,7 @@ impl OnyxEngine {
         Self {
             world: onyx_physics::PhysicsWorld::new(settings),
             bodies: Vec::new(),
-            failures: 0,
+            tally: NarrowphaseTally::default(),
             stages: [0.0; 6],
         }
     }
@@ -290,7 +338,13 @@ impl Engine for OnyxEngine {
 
     fn step(&mut self) {
         let c = self.world.step().counters;
-        self.failures += u64::from(c.gjk_not_converged) + u64::from(c.epa_failures);
+        let t = &mut self.tally;
+        t.gjk_runs += u64::from(c.gjk_calls);
+        t.gjk_iterations += u64::from(c.gjk_iterations);
+        t.gjk_not_converged += u64::from(c.gjk_not_converged);
+        t.epa_runs += u64::from(c.epa_calls);
+        t.epa_iterations += u64::from(c.epa_iterations);
+        t.epa_failures += u64::from(c.epa_failures);
         let stages = [
             c.broadphase,
             c.narrowphase,
@@ -336,8 +390,8 @@ impl Engine for OnyxEngine {
         self.bodies.len()
     }
 
-    fn narrowphase_failures(&self) -> Option<u64> {
-        Some(self.failures)
+    fn narrowphase_tally(&self) -> Option<NarrowphaseTally> {
+        Some(self.tally)
     }
 
     fn stage_seconds(&self) -> Vec<(&'static str, f64)> {

@@ -154,6 +154,22 @@ pub fn write_markdown(rows: &[Row], dir: &Path, quick: bool) -> anyhow::Result<P
                 r.error
             );
         }
+        let details: Vec<String> = rows
+            .iter()
+            .filter(|r| r.scene == name)
+            .filter_map(|r| {
+                let d = r.detail.as_ref()?;
+                Some(format!(
+                    "- {} {} Hz ×{}: {d}",
+                    r.engine.name(),
+                    r.settings.hz,
+                    r.settings.iterations
+                ))
+            })
+            .collect();
+        if !details.is_empty() {
+            let _ = writeln!(s, "\n{}", details.join("\n"));
+        }
         let _ = writeln!(s, "\n![{name}]({name}.png)\n");
     }
     let p = dir.join("summary.md");

@@ -194,12 +194,15 @@ pub struct Row {
     pub figure: f64,
     /// Error against the analytic answer or the converged reference.
     pub error: f64,
+    /// What else the last run showed ([`crate::scenes::Trial::detail`]).
+    pub detail: Option<String>,
 }
 
 /// Outcome of one run: timing and figure.
 struct Measured {
     ms_per_step: f64,
     figure: f64,
+    detail: Option<String>,
     bodies: usize,
     steps: usize,
 }
@@ -233,6 +236,7 @@ fn run_once(scene: &dyn Scene, engine: EngineKind, s: StepSettings, size: Size) 
     Measured {
         ms_per_step: ms,
         figure: trial.figure(e.as_ref()),
+        detail: trial.detail(e.as_ref()),
         bodies: e.len(),
         steps,
     }
@@ -320,6 +324,7 @@ pub fn run_sweep(opts: &Options, mut on_row: impl FnMut(&Row)) -> anyhow::Result
                     ms_per_sim_second: ms_per_step * f64::from(s.hz),
                     figure: m.figure,
                     error,
+                    detail: m.detail,
                 });
             }
         }

@@ -79,3 +79,57 @@ fn unknown_scene_is_an_error() {
     let opts = Options::parse(["--scenes".to_string(), "nope".to_string()]).expect("parses");
     assert!(opts.selected().is_err());
 }
+
+#[test]
+fn degenerate_hulls_report_gjk_and_epa_iterations_and_failures() {
+    let dir = tempfile::tempdir().expect("temp dir");
+    let opts = Options::parse(
+        [
+            "--quick",
+            "--no-progress",
+            "--scenes",
+            "degenerate_hulls",
+            "--rates",
+            "60",
+            "--iterations",
+            "4",
+            "--out",
+        ]
+        .iter()
+        .map(|s| (*s).to_string())
+        .chain([dir.path().display().to_string()]),
+    )
+    .expect("options parse");
+    let report = run(&opts, false).expect("quick run");
+    let onyx = report
+        .rows
+        .iter()
+        .find(|r| r.engine.name() == "onyx")
+        .expect("an onyx row");
+    let detail = onyx
+        .detail
+        .as_deref()
+        .expect("onyx reports its narrowphase");
+    assert!(detail.starts_with("GJK "), "{detail}");
+    let runs: u64 = detail["GJK ".len()..]
+        .split(' ')
+        .next()
+        .and_then(|n| n.parse().ok())
+        .expect("a GJK run count");
+    assert!(
+        runs > 0,
+        "hulls resting on a ground ran no GJK query: {detail}"
+    );
+    assert!(
+        report
+            .rows
+            .iter()
+            .all(|r| r.engine.name() == "onyx" || r.detail.is_none()),
+        "rapier reports no narrowphase tally"
+    );
+    let md = std::fs::read_to_string(&report.markdown).expect("markdown");
+    assert!(
+        md.contains("- onyx 60 Hz ×4: GJK "),
+        "summary.md lacks the tally"
+    );
+}

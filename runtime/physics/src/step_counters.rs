@@ -39,6 +39,8 @@ pub struct StepCounters {
     pub gjk_not_converged: u32,
     /// EPA runs.
     pub epa_calls: u32,
+    /// EPA iterations summed.
+    pub epa_iterations: u32,
     /// EPA runs that failed to converge or were degenerate (fallback used).
     pub epa_failures: u32,
     /// Bodies moved back by continuous collision.

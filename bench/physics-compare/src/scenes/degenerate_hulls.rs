@@ -104,7 +104,10 @@ impl Scene for DegenerateHulls {
 
 impl Trial for Run {
     fn figure(&self, e: &dyn Engine) -> f64 {
-        let failures = e.narrowphase_failures().unwrap_or(0) as f64;
+        let failures = e.narrowphase_tally().map_or(0, |t| t.failures()) as f64;
         max_displacement(e, &self.bodies) + failures
+    }
+    fn detail(&self, e: &dyn Engine) -> Option<String> {
+        e.narrowphase_tally().map(|t| t.to_string())
     }
 }

@@ -66,6 +66,10 @@ pub trait Trial {
     fn observe(&mut self, _e: &dyn Engine) {}
     /// The figure (see [`Scene::reference`]); NaN if the simulation blew up.
     fn figure(&self, e: &dyn Engine) -> f64;
+    /// What else the run showed, for the summary (e.g. GJK/EPA iterations); none by default.
+    fn detail(&self, _e: &dyn Engine) -> Option<String> {
+        None
+    }
 }
 
 /// Every scene, in report order (most valuable first).

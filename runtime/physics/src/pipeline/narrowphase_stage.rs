@@ -46,6 +46,7 @@ impl PhysicsWorld {
         c.gjk_iterations = stats.gjk_iterations;
         c.gjk_not_converged = stats.gjk_not_converged;
         c.epa_calls = stats.epa_calls;
+        c.epa_iterations = stats.epa_iterations;
         c.epa_failures = stats.epa_failures;
         c.reused_pairs = stats.reused_pairs;
     }
