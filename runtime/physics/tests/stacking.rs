@@ -141,3 +141,37 @@ fn frictionless_offset_stack_holds_still_for_4000_steps() {
         );
     }
 }
+
+#[test]
+fn a_column_of_twenty_balls_stiffens_its_loaded_contacts() {
+    // Soft contacts at the balanced preset's 32 Hz would let the lowest pair, carrying 19
+    // balls through an effective mass of half a ball, press 9.2 mm together (2 · 19 g / ω²);
+    // ball pairs stiffen with their load up to 60 Hz at 60 × 4, which leaves 2.6 mm.
+    let (mut w, _) = world_with_ground(0.5);
+    let r = 0.1;
+    let balls: Vec<BodyHandle> = (0..20)
+        .map(|i| {
+            let b = w.insert_body(RigidBodyDesc::dynamic().translation(Vec3::new(
+                0.0,
+                r + 2.0 * r * i as f32,
+                0.0,
+            )));
+            w.insert_collider(ColliderDesc::sphere(r), b);
+            b
+        })
+        .collect();
+    run(&mut w, 240);
+    let y = |k: usize| w.body(balls[k]).unwrap().translation().y;
+    let lowest_pair = 2.0 * r - (y(1) - y(0));
+    assert!(
+        (0.0..0.004).contains(&lowest_pair),
+        "the two lowest balls press {lowest_pair:.5} m together"
+    );
+    for (k, &b) in balls.iter().enumerate() {
+        let p = w.body(b).unwrap().translation();
+        assert!(
+            p.x.abs() < 1e-3 && p.z.abs() < 1e-3,
+            "ball {k} left the column: {p}"
+        );
+    }
+}

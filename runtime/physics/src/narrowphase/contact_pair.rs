@@ -40,6 +40,10 @@ pub struct ContactPair {
     /// The bodies' poses when the manifolds were last generated; `None` until the first
     /// generation.
     pub(crate) generated_at: Option<Generation>,
+    /// Two balls: one point on the line of centres, rewritten every step, which the solver's
+    /// linearised separation follows exactly within the step (no lever arm turns it), so
+    /// its contact may stiffen further with load (see `Softness::max_ball_load_hertz`).
+    pub(crate) ball_ball: bool,
 }
 
 /// Poses a pair's manifolds were generated at, which reuse is measured against.

@@ -134,6 +134,7 @@ impl NarrowPhase {
             updated: false,
             solved_pushing: None,
             generated_at: None,
+            ball_ball: false,
         });
         true
     }
@@ -468,6 +469,7 @@ fn ball_ball(
     margin: f32,
     f: &PointFrame,
 ) {
+    pair.ball_ball = true;
     let Some((n, point, separation)) = ball_contact(ca, ra, cb, rb, margin) else {
         pair.manifolds.clear();
         pair.min_separation = f32::MAX;

@@ -123,6 +123,7 @@ impl PhysicsWorld {
         // when its batch is packed.
         let hertz = s.contact_hertz.min(0.25 / h);
         let max_hertz = Softness::max_load_hertz(h, s.dt);
+        let max_ball_hertz = Softness::max_ball_load_hertz(h, s.dt);
         let g_h = s.gravity.length() * h;
         self.manifold_refs.clear();
         let mut contacts = 0u32;
@@ -215,7 +216,12 @@ impl PhysicsWorld {
                 (p + cp.normal_impulse, m + cp.normal_mass * g_h)
             });
             let ratio = if own > 0.0 { load / own } else { 1.0 };
-            c.softness = Softness::for_load(base_hz, ratio, max_hertz, s.contact_damping_ratio, h);
+            let cap = if pair.ball_ball {
+                max_ball_hertz
+            } else {
+                max_hertz
+            };
+            c.softness = Softness::for_load(base_hz, ratio, cap, s.contact_damping_ratio, h);
             PreparedManifold {
                 constraint: c,
                 points,
