@@ -1,25 +1,25 @@
 //! Smoke test of the harness: the `--quick` path on three scenes produces CSV rows, a
 //! Markdown summary and PNG plots with finite figures. No timing asserts.
 
-use onyx_physics_bench::{run, Options};
+use onyx_physics_bench::{run, Options, Report};
+
+/// A `--quick` run with `args`, writing into `dir`.
+fn quick_run(dir: &tempfile::TempDir, args: &[&str]) -> Report {
+    let opts = Options::parse(
+        ["--quick", "--no-progress"]
+            .iter()
+            .chain(args)
+            .map(|s| (*s).to_string())
+            .chain(["--out".to_string(), dir.path().display().to_string()]),
+    )
+    .expect("options parse");
+    run(&opts, false).expect("quick run")
+}
 
 #[test]
 fn quick_run_writes_csv_markdown_and_plots_with_finite_figures() {
     let dir = tempfile::tempdir().expect("temp dir");
-    let opts = Options::parse(
-        [
-            "--quick",
-            "--no-progress",
-            "--scenes",
-            "free_fall,stack,tunneling",
-            "--out",
-        ]
-        .iter()
-        .map(|s| (*s).to_string())
-        .chain([dir.path().display().to_string()]),
-    )
-    .expect("options parse");
-    let report = run(&opts, false).expect("quick run");
+    let report = quick_run(&dir, &["--scenes", "free_fall,stack,tunneling"]);
 
     // 3 scenes × 2 engines × (2 rates × 2 iteration counts).
     assert_eq!(report.rows.len(), 24, "rows: {}", report.rows.len());
@@ -83,24 +83,17 @@ fn unknown_scene_is_an_error() {
 #[test]
 fn degenerate_hulls_report_gjk_and_epa_iterations_and_failures() {
     let dir = tempfile::tempdir().expect("temp dir");
-    let opts = Options::parse(
-        [
-            "--quick",
-            "--no-progress",
+    let report = quick_run(
+        &dir,
+        &[
             "--scenes",
             "degenerate_hulls",
             "--rates",
             "60",
             "--iterations",
             "4",
-            "--out",
-        ]
-        .iter()
-        .map(|s| (*s).to_string())
-        .chain([dir.path().display().to_string()]),
-    )
-    .expect("options parse");
-    let report = run(&opts, false).expect("quick run");
+        ],
+    );
     let onyx = report
         .rows
         .iter()

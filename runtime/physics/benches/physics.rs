@@ -12,16 +12,21 @@ use onyx_physics::narrowphase::gjk_distance;
 use onyx_physics::shape::ConvexCore;
 use onyx_physics::{ColliderDesc, LockedAxes, PhysicsSettings, PhysicsWorld, Pose, RigidBodyDesc};
 
+/// A world with default settings (sleeping on or off) and a ground plane at y = 0.
+fn ground_world(sleep: bool) -> PhysicsWorld {
+    let mut w = PhysicsWorld::new(PhysicsSettings {
+        sleep_enabled: sleep,
+        ..Default::default()
+    });
+    let g = w.insert_body(RigidBodyDesc::fixed());
+    w.insert_collider(ColliderDesc::half_space(Vec3::Y), g);
+    w
+}
+
 /// `n` bodies (alternating boxes and spheres) on a grid above a ground plane, stepped
 /// until they rest.
 fn settled_world(n: usize, sleep: bool) -> PhysicsWorld {
-    let s = PhysicsSettings {
-        sleep_enabled: sleep,
-        ..Default::default()
-    };
-    let mut w = PhysicsWorld::new(s);
-    let g = w.insert_body(RigidBodyDesc::fixed());
-    w.insert_collider(ColliderDesc::half_space(Vec3::Y), g);
+    let mut w = ground_world(sleep);
     let side = (n as f32).sqrt().ceil() as usize;
     for i in 0..n {
         let (x, z) = ((i % side) as f32 * 1.5, (i / side) as f32 * 1.5);
@@ -44,13 +49,7 @@ fn settled_world(n: usize, sleep: bool) -> PhysicsWorld {
 }
 
 fn pyramid(rows: usize) -> PhysicsWorld {
-    let s = PhysicsSettings {
-        sleep_enabled: false,
-        ..Default::default()
-    };
-    let mut w = PhysicsWorld::new(s);
-    let g = w.insert_body(RigidBodyDesc::fixed());
-    w.insert_collider(ColliderDesc::half_space(Vec3::Y), g);
+    let mut w = ground_world(false);
     for row in 0..rows {
         let n = rows - row;
         for i in 0..n {
@@ -179,13 +178,7 @@ fn bench_idle(c: &mut Criterion) {
 /// A block of 20 × 20 × 5 spheres touching their neighbours, resting on a ground, every
 /// body awake, with `locks` on each sphere.
 fn sphere_block(locks: LockedAxes) -> PhysicsWorld {
-    let s = PhysicsSettings {
-        sleep_enabled: false,
-        ..Default::default()
-    };
-    let mut w = PhysicsWorld::new(s);
-    let g = w.insert_body(RigidBodyDesc::fixed());
-    w.insert_collider(ColliderDesc::half_space(Vec3::Y), g);
+    let mut w = ground_world(false);
     for i in 0..2000 {
         let (x, z, y) = (i % 20, (i / 20) % 20, i / 400);
         let b = w.insert_body(
