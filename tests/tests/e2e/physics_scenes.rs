@@ -238,7 +238,7 @@ fn a_plank_four_hundred_times_heavier_rests_on_light_cubes() {
 }
 
 #[test]
-fn no_ccd_bullet_passes_the_thin_wall() {
+fn no_bullet_with_ccd_passes_the_thin_wall() {
     let mut host = load("tunneling");
     let steps = steps_for(&mut host, 0.25);
     host.step(steps);

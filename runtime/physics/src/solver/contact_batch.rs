@@ -27,8 +27,8 @@ use super::body_state::BodyState;
 use super::contact_constraint::PreparedManifold;
 use super::face_contact::FaceContact;
 use super::lanes::{
-    gather_deltas, gather_displacements, gather_linear_velocities, gather_velocities,
-    scatter_linear_velocities, scatter_velocities, Velocities, F, LANES, V3,
+    gather, gather_deltas, gather_velocities, scatter_linear_velocities, scatter_velocities,
+    Velocities, F, LANES, V3,
 };
 
 /// Four one-point manifolds.
@@ -397,7 +397,7 @@ impl<const N: usize, M: ManifoldRows, L: Levers<N>> ContactBatch<N, M, L> {
             gather_velocities(states, bodies)
         } else {
             Velocities {
-                v: gather_linear_velocities(states, bodies),
+                v: gather(states, bodies, |s| s.v),
                 w: V3::ZERO,
             }
         }
@@ -451,8 +451,8 @@ impl<const N: usize, M: ManifoldRows, L: Levers<N>> ContactBatch<N, M, L> {
             )
         } else {
             (
-                (gather_displacements(states, &self.body_a), V3::ZERO),
-                (gather_displacements(states, &self.body_b), V3::ZERO),
+                (gather(states, &self.body_a, |s| s.dp), V3::ZERO),
+                (gather(states, &self.body_b, |s| s.dp), V3::ZERO),
             )
         };
         let n = self.normal;

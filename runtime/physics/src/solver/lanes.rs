@@ -140,36 +140,32 @@ pub(crate) struct Velocities {
     pub w: V3,
 }
 
+/// Reads one field (`field(state)`) of `bodies[l]` into lane `l`.
+#[inline(always)]
+pub(crate) fn gather(
+    states: &[BodyState],
+    bodies: &[u32; LANES],
+    field: impl Fn(&BodyState) -> Vec3A,
+) -> V3 {
+    V3::from_lanes(bodies.map(|i| field(&states[i as usize])))
+}
+
 /// Reads the velocities of `bodies[l]` into lane `l`.
 #[inline(always)]
 pub(crate) fn gather_velocities(states: &[BodyState], bodies: &[u32; LANES]) -> Velocities {
-    let s = bodies.map(|i| &states[i as usize]);
     Velocities {
-        v: V3::from_lanes(s.map(|s| s.v)),
-        w: V3::from_lanes(s.map(|s| s.w)),
+        v: gather(states, bodies, |s| s.v),
+        w: gather(states, bodies, |s| s.w),
     }
 }
 
 /// Reads the position deltas (`dp`, `dθ`) of `bodies[l]` into lane `l`.
 #[inline(always)]
 pub(crate) fn gather_deltas(states: &[BodyState], bodies: &[u32; LANES]) -> (V3, V3) {
-    let s = bodies.map(|i| &states[i as usize]);
     (
-        V3::from_lanes(s.map(|s| s.dp)),
-        V3::from_lanes(s.map(|s| s.dtheta)),
+        gather(states, bodies, |s| s.dp),
+        gather(states, bodies, |s| s.dtheta),
     )
-}
-
-/// Reads the linear velocities of `bodies[l]` into lane `l` (bodies that do not rotate).
-#[inline(always)]
-pub(crate) fn gather_linear_velocities(states: &[BodyState], bodies: &[u32; LANES]) -> V3 {
-    V3::from_lanes(bodies.map(|i| states[i as usize].v))
-}
-
-/// Reads the displacements `dp` of `bodies[l]` into lane `l` (bodies that do not rotate).
-#[inline(always)]
-pub(crate) fn gather_displacements(states: &[BodyState], bodies: &[u32; LANES]) -> V3 {
-    V3::from_lanes(bodies.map(|i| states[i as usize].dp))
 }
 
 /// [`scatter_velocities`] for bodies that do not rotate: only the linear velocity.
