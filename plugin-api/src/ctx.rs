@@ -2,15 +2,16 @@
 
 use abi_stable::std_types::{RResult, RVec};
 
-use crate::__ffi::{BlobFfi, BuiltinFfi, BuiltinId, HostRef, PluginOpFfi, RayFfi};
+use crate::__ffi::{BlobFfi, HostRef, PluginOpFfi, RayFfi};
 use crate::component::component_type::{decode, BundleParts};
 use crate::glam::Vec3;
 use crate::host::PhysicsCommand;
 mod tool_calls;
 
 use crate::{
-    BlobFormat, Bundle, Component, ComponentType, CtxError, DebugLine, Entity, EntityTransform,
-    InputState, LogLevel, MeshId, Message, RayHit, TextureId, Time,
+    BlobFormat, BuiltinId, BuiltinValue, Bundle, Component, ComponentType, CtxError, DebugLine,
+    Entity, EntityTransform, GlobalTransform, InputState, KeepPose, LogLevel, MeshId, Message,
+    Parent, RayHit, TextureId, Time, Transform,
 };
 
 /// The host, as a plugin reaches it: the world, the clock, input, events and logging.
@@ -56,9 +57,15 @@ impl<'a> Ctx<'a> {
         ok(self.host.spawn(parts.builtins, parts.blobs))
     }
 
-    /// Removes `entity` and all its components.
+    /// Removes `entity` and all its components. Its children stay where they are in the
+    /// world and become roots (see [`Ctx::despawn_recursive`] to remove them too).
     pub fn despawn(&mut self, entity: Entity) -> Result<(), CtxError> {
         ok(self.host.despawn(entity))
+    }
+
+    /// Removes `entity` with all its descendants.
+    pub fn despawn_recursive(&mut self, entity: Entity) -> Result<(), CtxError> {
+        ok(self.host.despawn_recursive(entity))
     }
 
     /// Whether `entity` exists.
@@ -69,6 +76,59 @@ impl<'a> Ctx<'a> {
     /// Every entity in the world (a view into a host buffer, valid until the next call).
     pub fn entities(&mut self) -> &[Entity] {
         self.host.entities().as_slice()
+    }
+
+    // ----- the scene graph -----
+
+    /// Puts `entity` under `parent`, keeping its world pose ([`KeepPose::World`]: its local
+    /// transform is recomputed) or its local transform ([`KeepPose::Local`]: it moves with
+    /// the parent). Refused with [`CtxError::InvalidParent`] when `parent` is the entity,
+    /// one of its descendants, or does not exist.
+    pub fn set_parent(
+        &mut self,
+        entity: Entity,
+        parent: Entity,
+        keep: KeepPose,
+    ) -> Result<(), CtxError> {
+        if parent.to_bits() == 0 {
+            return Err(CtxError::InvalidParent {
+                entity,
+                parent,
+                problem: crate::ParentProblem::Missing,
+            });
+        }
+        ok(self.host.set_parent(entity, parent, keep))
+    }
+
+    /// Makes `entity` a root again, keeping its world pose or its local transform.
+    pub fn clear_parent(&mut self, entity: Entity, keep: KeepPose) -> Result<(), CtxError> {
+        ok(self.host.set_parent(entity, Entity::from_bits(0), keep))
+    }
+
+    /// The parent of `entity`, if it has one.
+    pub fn parent(&mut self, entity: Entity) -> Result<Option<Entity>, CtxError> {
+        match self.get::<Parent>(entity) {
+            Ok(Parent(parent)) => Ok(Some(parent)),
+            Err(CtxError::MissingComponent { .. }) => Ok(None),
+            Err(e) => Err(e),
+        }
+    }
+
+    /// The children of `entity`, in the order they were attached.
+    pub fn children(&mut self, entity: Entity) -> Result<Vec<Entity>, CtxError> {
+        ok(self.host.children(entity)).map(RVec::into_vec)
+    }
+
+    /// Where `entity` is in the world: its [`Transform`] with every ancestor's applied
+    /// (up to date with every write made so far, this call included).
+    pub fn world_pose(&mut self, entity: Entity) -> Result<GlobalTransform, CtxError> {
+        ok(self.host.world_pose(entity)).map(Into::into)
+    }
+
+    /// Moves `entity` to `pose` in the world: writes the local [`Transform`] that puts it
+    /// there under its parent (all of `pose` for an entity without one).
+    pub fn set_world_pose(&mut self, entity: Entity, pose: Transform) -> Result<(), CtxError> {
+        ok(self.host.set_world_pose(entity, pose.into()))
     }
 
     // ----- components -----
@@ -327,29 +387,20 @@ impl<'a> Ctx<'a> {
         self.log(LogLevel::Error, message)
     }
 
-    // ----- raw access used by `ComponentType` -----
+    // ----- built-ins by id (tools), and raw access used by `ComponentType` -----
 
-    pub(crate) fn raw_get_builtin(
-        &mut self,
-        entity: Entity,
-        id: BuiltinId,
-    ) -> Result<BuiltinFfi, CtxError> {
-        ok(self.host.get_builtin(entity, id))
+    /// Reads the built-in component `id` of `entity`.
+    pub fn get_builtin(&mut self, entity: Entity, id: BuiltinId) -> Result<BuiltinValue, CtxError> {
+        ok(self.host.get_builtin(entity, id)).map(Into::into)
     }
 
-    pub(crate) fn raw_set_builtin(
-        &mut self,
-        entity: Entity,
-        value: BuiltinFfi,
-    ) -> Result<(), CtxError> {
-        ok(self.host.set_builtin(entity, value))
+    /// Inserts or replaces a built-in component of `entity` (checked like every write).
+    pub fn set_builtin(&mut self, entity: Entity, value: BuiltinValue) -> Result<(), CtxError> {
+        ok(self.host.set_builtin(entity, value.into()))
     }
 
-    pub(crate) fn raw_remove_builtin(
-        &mut self,
-        entity: Entity,
-        id: BuiltinId,
-    ) -> Result<(), CtxError> {
+    /// Removes the built-in component `id` from `entity`.
+    pub fn remove_builtin(&mut self, entity: Entity, id: BuiltinId) -> Result<(), CtxError> {
         ok(self.host.remove_builtin(entity, id))
     }
 

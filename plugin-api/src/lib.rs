@@ -42,7 +42,10 @@
 //! - [`Plugin`] (`plugin.rs`): the lifecycle; [`export_plugin!`] (`export.rs`) exports it.
 //! - [`Ctx`] (`ctx.rs`): the host during a call — entities, components, bulk queries,
 //!   time, input, events, logging, quit. Its errors: [`CtxError`] (`ctx_error.rs`).
-//! - `component/`: [`Name`], [`Transform`], your own [`Component`]s, [`Bundle`]s.
+//! - `component/`: the built-in components ([`Name`], [`Transform`], [`Parent`],
+//!   [`MeshRenderer`], [`Camera`], [`Light`], [`RigidBody`], [`Collider`] — each defined once,
+//!   see [`Builtin`]), your own [`Component`]s, [`Bundle`]s, and [`GlobalTransform`], the
+//!   world pose the host computes.
 //! - `event/`: [`Event`] and its sources; [`Message`] for typed custom events.
 //! - `input/`: [`Key`], [`MouseButton`], [`InputState`].
 //! - [`Time`] (`time.rs`), [`Flow`] (`flow.rs`), [`LogLevel`] (`log_level.rs`),
@@ -97,7 +100,7 @@ pub mod __ffi;
 
 pub use component::*;
 pub use ctx::Ctx;
-pub use ctx_error::CtxError;
+pub use ctx_error::{CtxError, ParentProblem};
 pub use egui;
 pub use entity::Entity;
 pub use event::*;

@@ -3,6 +3,9 @@
 use abi_stable::StableAbi;
 use serde::{Deserialize, Serialize};
 
+use super::builtin::{finite, FileRefs, HostRefs};
+use crate::{Builtin, InvalidValue};
+
 /// The projection of a [`Camera`].
 #[repr(C, u8)]
 #[derive(StableAbi, Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
@@ -54,5 +57,51 @@ impl Camera {
             far: 1000.0,
             active: true,
         }
+    }
+}
+
+impl Builtin for Camera {
+    const NAME: &'static str = "Camera";
+    type File = Camera;
+
+    fn tool_default() -> Option<Self> {
+        Some(Camera::perspective(60f32.to_radians()))
+    }
+
+    fn validate(&self, _refs: &dyn HostRefs) -> Result<(), InvalidValue> {
+        let (field, extent) = match self.projection {
+            Projection::Perspective { fov_y } => ("projection.fov_y", fov_y),
+            Projection::Orthographic { height } => ("projection.height", height),
+        };
+        finite("near", &[self.near])?;
+        finite("far", &[self.far])?;
+        finite(field, &[extent])?;
+        if self.near <= 0.0 {
+            return Err(InvalidValue::invalid(
+                "near",
+                format!("must be > 0 m, got {}", self.near),
+            ));
+        }
+        if self.far <= self.near {
+            return Err(InvalidValue::invalid(
+                "far",
+                format!("must be > near ({} m), got {}", self.near, self.far),
+            ));
+        }
+        if extent <= 0.0 {
+            return Err(InvalidValue::invalid(
+                field,
+                format!("must be > 0, got {extent}"),
+            ));
+        }
+        Ok(())
+    }
+
+    fn to_file(&self, _refs: &dyn HostRefs) -> Camera {
+        *self
+    }
+
+    fn from_file(file: Camera, _refs: &mut dyn FileRefs) -> Result<Self, InvalidValue> {
+        Ok(file)
     }
 }

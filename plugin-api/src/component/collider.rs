@@ -3,7 +3,8 @@
 use abi_stable::StableAbi;
 use serde::{Deserialize, Serialize};
 
-use crate::MeshId;
+use super::builtin::{finite, FileRefs, HostRefs};
+use crate::{Builtin, InvalidValue, MeshId};
 
 /// A collision shape, in the entity's local frame (the transform's scale does not apply).
 #[repr(C, u8)]
@@ -118,31 +119,192 @@ impl Collider {
         self.density = density;
         self
     }
+}
 
-    /// Whether every number is finite and sizes are positive.
-    pub fn is_valid(&self) -> bool {
-        let sizes_ok = match self.shape {
-            ColliderShape::Sphere { radius } => radius.is_finite() && radius > 0.0,
+/// A [`Collider`] as scene files and state dumps write it: mesh shapes by model file path.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct ColliderFile {
+    /// The shape.
+    pub shape: ColliderShapeFile,
+    /// Offset from the entity's origin, local frame, metres.
+    #[serde(default)]
+    pub offset: [f32; 3],
+    /// kg/m³.
+    #[serde(default = "water")]
+    pub density: f32,
+    /// Bounciness 0..1.
+    #[serde(default)]
+    pub restitution: f32,
+    /// Sliding friction.
+    #[serde(default = "half")]
+    pub friction: f32,
+    /// Friction at rest (defaults to `friction`).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub static_friction: Option<f32>,
+}
+
+fn water() -> f32 {
+    1000.0
+}
+
+fn half() -> f32 {
+    0.5
+}
+
+/// A [`ColliderShape`] as scene files write it.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub enum ColliderShapeFile {
+    /// Sphere of `radius` m.
+    Sphere {
+        /// Radius.
+        radius: f32,
+    },
+    /// Box with half extents.
+    Box {
+        /// Half extents.
+        half_extents: [f32; 3],
+    },
+    /// Capsule along Y.
+    Capsule {
+        /// Half length of the straight part.
+        half_height: f32,
+        /// Radius.
+        radius: f32,
+    },
+    /// Half space below the local XZ plane.
+    Plane,
+    /// Convex hull of a model file's vertices.
+    ConvexHull {
+        /// Model file.
+        mesh: String,
+    },
+    /// Triangles of a model file (static).
+    TriMesh {
+        /// Model file.
+        mesh: String,
+    },
+}
+
+fn positive(field: &'static str, value: f32) -> Result<(), InvalidValue> {
+    finite(field, &[value])?;
+    if value > 0.0 {
+        Ok(())
+    } else {
+        Err(InvalidValue::invalid(
+            field,
+            format!("must be > 0 m, got {value}"),
+        ))
+    }
+}
+
+fn not_negative(field: &'static str, value: f32) -> Result<(), InvalidValue> {
+    finite(field, &[value])?;
+    if value >= 0.0 {
+        Ok(())
+    } else {
+        Err(InvalidValue::invalid(
+            field,
+            format!("must be ≥ 0, got {value}"),
+        ))
+    }
+}
+
+impl Builtin for Collider {
+    const NAME: &'static str = "Collider";
+    type File = ColliderFile;
+
+    fn tool_default() -> Option<Self> {
+        Some(Collider::cuboid(0.5, 0.5, 0.5))
+    }
+
+    fn validate(&self, refs: &dyn HostRefs) -> Result<(), InvalidValue> {
+        match self.shape {
+            ColliderShape::Sphere { radius } => positive("shape.radius", radius)?,
             ColliderShape::Box { half_extents } => {
-                half_extents.iter().all(|h| h.is_finite() && *h > 0.0)
+                for h in half_extents {
+                    positive("shape.half_extents", h)?;
+                }
             }
             ColliderShape::Capsule {
                 half_height,
                 radius,
             } => {
-                half_height.is_finite() && half_height >= 0.0 && radius.is_finite() && radius > 0.0
+                not_negative("shape.half_height", half_height)?;
+                positive("shape.radius", radius)?;
             }
-            _ => true,
+            ColliderShape::Plane => {}
+            ColliderShape::ConvexHull { mesh } | ColliderShape::TriMesh { mesh } => {
+                if refs.mesh_file(mesh).is_none() {
+                    return Err(InvalidValue::invalid(
+                        "shape.mesh",
+                        format!("must be a model from load_mesh, not mesh id {}", mesh.0),
+                    ));
+                }
+            }
+        }
+        finite("offset", &self.offset)?;
+        not_negative("density", self.density)?;
+        not_negative("restitution", self.restitution)?;
+        not_negative("friction", self.friction)?;
+        not_negative("static_friction", self.static_friction)
+    }
+
+    fn to_file(&self, refs: &dyn HostRefs) -> ColliderFile {
+        let path = |mesh| refs.mesh_file(mesh).unwrap_or_default();
+        let shape = match self.shape {
+            ColliderShape::Sphere { radius } => ColliderShapeFile::Sphere { radius },
+            ColliderShape::Box { half_extents } => ColliderShapeFile::Box { half_extents },
+            ColliderShape::Capsule {
+                half_height,
+                radius,
+            } => ColliderShapeFile::Capsule {
+                half_height,
+                radius,
+            },
+            ColliderShape::Plane => ColliderShapeFile::Plane,
+            ColliderShape::ConvexHull { mesh } => {
+                ColliderShapeFile::ConvexHull { mesh: path(mesh) }
+            }
+            ColliderShape::TriMesh { mesh } => ColliderShapeFile::TriMesh { mesh: path(mesh) },
         };
-        sizes_ok
-            && self.offset.iter().all(|v| v.is_finite())
-            && [
-                self.density,
-                self.restitution,
-                self.friction,
-                self.static_friction,
-            ]
-            .iter()
-            .all(|v| v.is_finite() && *v >= 0.0)
+        ColliderFile {
+            shape,
+            offset: self.offset,
+            density: self.density,
+            restitution: self.restitution,
+            friction: self.friction,
+            static_friction: (self.static_friction != self.friction)
+                .then_some(self.static_friction),
+        }
+    }
+
+    fn from_file(file: ColliderFile, refs: &mut dyn FileRefs) -> Result<Self, InvalidValue> {
+        let shape = match file.shape {
+            ColliderShapeFile::Sphere { radius } => ColliderShape::Sphere { radius },
+            ColliderShapeFile::Box { half_extents } => ColliderShape::Box { half_extents },
+            ColliderShapeFile::Capsule {
+                half_height,
+                radius,
+            } => ColliderShape::Capsule {
+                half_height,
+                radius,
+            },
+            ColliderShapeFile::Plane => ColliderShape::Plane,
+            ColliderShapeFile::ConvexHull { mesh } => ColliderShape::ConvexHull {
+                mesh: refs.mesh(&mesh),
+            },
+            ColliderShapeFile::TriMesh { mesh } => ColliderShape::TriMesh {
+                mesh: refs.mesh(&mesh),
+            },
+        };
+        Ok(Collider {
+            shape,
+            offset: file.offset,
+            density: file.density,
+            restitution: file.restitution,
+            friction: file.friction,
+            static_friction: file.static_friction.unwrap_or(file.friction),
+        })
     }
 }

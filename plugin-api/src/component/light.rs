@@ -3,6 +3,9 @@
 use abi_stable::StableAbi;
 use serde::{Deserialize, Serialize};
 
+use super::builtin::{finite, FileRefs, HostRefs};
+use crate::{Builtin, InvalidValue};
+
 /// A light. Directional lights shine along their entity's local -Z; point lights sit at the
 /// entity's position. The renderer uses the first ambient and directional light it finds and
 /// up to 8 point lights. Colours are linear RGB.
@@ -51,18 +54,39 @@ impl Light {
             intensity: 1.0,
         }
     }
+}
 
-    /// Whether every value is finite.
-    pub fn is_finite(&self) -> bool {
+impl Builtin for Light {
+    const NAME: &'static str = "Light";
+    type File = Light;
+
+    fn tool_default() -> Option<Self> {
+        Some(Light::sun())
+    }
+
+    fn validate(&self, _refs: &dyn HostRefs) -> Result<(), InvalidValue> {
         match *self {
             Light::Ambient { color, intensity } | Light::Directional { color, intensity } => {
-                color.iter().all(|c| c.is_finite()) && intensity.is_finite()
+                finite("color", &color)?;
+                finite("intensity", &[intensity])
             }
             Light::Point {
                 color,
                 intensity,
                 range,
-            } => color.iter().all(|c| c.is_finite()) && intensity.is_finite() && range.is_finite(),
+            } => {
+                finite("color", &color)?;
+                finite("intensity", &[intensity])?;
+                finite("range", &[range])
+            }
         }
+    }
+
+    fn to_file(&self, _refs: &dyn HostRefs) -> Light {
+        *self
+    }
+
+    fn from_file(file: Light, _refs: &mut dyn FileRefs) -> Result<Self, InvalidValue> {
+        Ok(file)
     }
 }

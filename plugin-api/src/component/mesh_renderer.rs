@@ -3,7 +3,8 @@
 use abi_stable::StableAbi;
 use serde::{Deserialize, Serialize};
 
-use crate::{MeshId, ShadingMode, TextureId};
+use super::builtin::{finite, FileRefs, HostRefs};
+use crate::{Builtin, InvalidValue, MeshId, ShadingMode, TextureId};
 
 /// Colour, texture and shading of a drawn mesh.
 #[repr(C)]
@@ -77,5 +78,103 @@ impl MeshRenderer {
     pub const fn with_material(mut self, material: Material) -> Self {
         self.material = material;
         self
+    }
+}
+
+/// A [`MeshRenderer`] as scene files and state dumps write it: meshes and textures by file
+/// path (ids are only valid while a host runs).
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct MeshRendererFile {
+    /// A built-in shape (`cube`, `sphere`, `plane`, `capsule`, `cylinder`) or a model file.
+    pub mesh: String,
+    /// Linear RGBA colour.
+    #[serde(default = "white")]
+    pub color: [f32; 4],
+    /// An albedo texture file.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub texture: Option<String>,
+    /// How it is shaded.
+    #[serde(default)]
+    pub shading: ShadingMode,
+    /// Whether it is drawn.
+    #[serde(default = "yes")]
+    pub visible: bool,
+}
+
+fn white() -> [f32; 4] {
+    [1.0; 4]
+}
+
+fn yes() -> bool {
+    true
+}
+
+impl Builtin for MeshRenderer {
+    const NAME: &'static str = "MeshRenderer";
+    type File = MeshRendererFile;
+
+    fn tool_default() -> Option<Self> {
+        Some(MeshRenderer::new(MeshId::CUBE))
+    }
+
+    fn validate(&self, refs: &dyn HostRefs) -> Result<(), InvalidValue> {
+        finite("material.color", &self.material.color)?;
+        if !refs.knows_mesh(self.mesh) {
+            return Err(InvalidValue::invalid(
+                "mesh",
+                format!("is mesh id {}, which this host did not give", self.mesh.0),
+            ));
+        }
+        if !refs.knows_texture(self.material.texture) {
+            return Err(InvalidValue::invalid(
+                "material.texture",
+                format!(
+                    "is texture id {}, which this host did not give",
+                    self.material.texture.0
+                ),
+            ));
+        }
+        Ok(())
+    }
+
+    fn to_file(&self, refs: &dyn HostRefs) -> MeshRendererFile {
+        let mesh = MeshId::BUILTIN
+            .iter()
+            .find(|(id, _)| *id == self.mesh)
+            .map(|(_, name)| (*name).to_owned())
+            .or_else(|| refs.mesh_file(self.mesh))
+            .unwrap_or_else(|| "cube".to_owned());
+        MeshRendererFile {
+            mesh,
+            color: self.material.color,
+            texture: refs.texture_file(self.material.texture),
+            shading: self.material.shading,
+            visible: self.visible,
+        }
+    }
+
+    fn from_file(file: MeshRendererFile, refs: &mut dyn FileRefs) -> Result<Self, InvalidValue> {
+        if file.mesh.is_empty() {
+            return Err(InvalidValue::invalid("mesh", "names no mesh"));
+        }
+        let mesh = MeshId::BUILTIN
+            .iter()
+            .find(|(_, name)| *name == file.mesh)
+            .map(|(id, _)| *id)
+            .unwrap_or_else(|| refs.mesh(&file.mesh));
+        let texture = file
+            .texture
+            .as_deref()
+            .map_or(TextureId::NONE, |path| refs.texture(path));
+        Ok(MeshRenderer {
+            mesh,
+            material: Material {
+                color: file.color,
+                texture,
+                shading: file.shading,
+            },
+            visible: file.visible,
+        })
     }
 }

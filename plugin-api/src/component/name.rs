@@ -2,6 +2,9 @@
 
 use serde::{Deserialize, Serialize};
 
+use super::builtin::{FileRefs, HostRefs};
+use crate::{Builtin, InvalidValue};
+
 /// A label shown in the editor's hierarchy and in state dumps. Names need not be unique.
 #[derive(Clone, Debug, Default, PartialEq, Eq, Hash, PartialOrd, Ord, Serialize, Deserialize)]
 #[serde(transparent)]
@@ -34,5 +37,26 @@ impl From<&str> for Name {
 impl From<String> for Name {
     fn from(name: String) -> Self {
         Self(name)
+    }
+}
+
+impl Builtin for Name {
+    const NAME: &'static str = "Name";
+    type File = String;
+
+    fn tool_default() -> Option<Self> {
+        Some(Name::new("entity"))
+    }
+
+    fn validate(&self, _refs: &dyn HostRefs) -> Result<(), InvalidValue> {
+        Ok(())
+    }
+
+    fn to_file(&self, _refs: &dyn HostRefs) -> String {
+        self.0.clone()
+    }
+
+    fn from_file(file: String, _refs: &mut dyn FileRefs) -> Result<Self, InvalidValue> {
+        Ok(Name(file))
     }
 }

@@ -4,6 +4,9 @@ use abi_stable::StableAbi;
 use glam::Vec3;
 use serde::{Deserialize, Serialize};
 
+use super::builtin::{finite, FileRefs, HostRefs};
+use crate::{Builtin, InvalidValue};
+
 /// How a body moves.
 #[repr(u8)]
 #[derive(StableAbi, Clone, Copy, Debug, Default, PartialEq, Eq, Hash, Serialize, Deserialize)]
@@ -156,18 +159,40 @@ impl RigidBody {
         self.locked_axes = locks;
         self
     }
+}
 
-    /// Whether every number is finite.
-    pub fn is_finite(&self) -> bool {
-        self.linear_velocity.is_finite()
-            && self.angular_velocity.is_finite()
-            && [
-                self.mass,
-                self.gravity_scale,
-                self.linear_damping,
-                self.angular_damping,
-            ]
-            .iter()
-            .all(|v| v.is_finite())
+impl Builtin for RigidBody {
+    const NAME: &'static str = "RigidBody";
+    type File = RigidBody;
+
+    fn tool_default() -> Option<Self> {
+        Some(RigidBody::default())
+    }
+
+    fn validate(&self, _refs: &dyn HostRefs) -> Result<(), InvalidValue> {
+        finite("linear_velocity", &self.linear_velocity.to_array())?;
+        finite("angular_velocity", &self.angular_velocity.to_array())?;
+        finite("mass", &[self.mass])?;
+        finite("gravity_scale", &[self.gravity_scale])?;
+        finite("linear_damping", &[self.linear_damping])?;
+        finite("angular_damping", &[self.angular_damping])?;
+        if self.mass < 0.0 {
+            return Err(InvalidValue::invalid(
+                "mass",
+                format!(
+                    "must be ≥ 0 kg (0: from the colliders' densities), got {}",
+                    self.mass
+                ),
+            ));
+        }
+        Ok(())
+    }
+
+    fn to_file(&self, _refs: &dyn HostRefs) -> RigidBody {
+        *self
+    }
+
+    fn from_file(file: RigidBody, _refs: &mut dyn FileRefs) -> Result<Self, InvalidValue> {
+        Ok(file)
     }
 }

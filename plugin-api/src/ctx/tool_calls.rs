@@ -5,14 +5,14 @@ use serde::de::DeserializeOwned;
 use serde::Serialize;
 
 use super::{ok, Ctx};
-use crate::__ffi::{ComponentOpFfi, ReportFfi, SceneOpFfi};
+use crate::__ffi::{ReportFfi, SceneOpFfi};
 use crate::glam::Vec2;
 use crate::host::PlayCommand;
 use crate::tools::{
-    ComponentEntry, Diagnostics, EntityList, LogLine, PlayMode, PluginInfo, Ray, RenderOverrides,
-    ScriptInfo,
+    ComponentKey, ComponentValue, Diagnostics, EntityList, LogLine, PlayMode, PluginInfo,
+    PluginValue, Ray, RenderOverrides, ScriptInfo,
 };
-use crate::{CtxError, Entity};
+use crate::{BlobFormat, BuiltinValue, CtxError, Entity};
 
 impl Ctx<'_> {
     fn report<T: DeserializeOwned>(
@@ -29,62 +29,70 @@ impl Ctx<'_> {
 
     // ----- world introspection -----
 
-    /// Every entity with its name (empty when unnamed), in one call: the hierarchy panel's
-    /// source. Cheap for tens of thousands of entities.
+    /// Every entity with its name (empty when unnamed) and its parent, in one call: the
+    /// hierarchy panel's source. Cheap for tens of thousands of entities.
     pub fn entity_list(&mut self) -> EntityList {
         self.host.entity_list().into()
     }
 
-    /// Every component of `entity` — built-in (`Name`, `Transform`, `MeshRenderer`, `Camera`,
-    /// `Light`, `RigidBody`, `Collider`) and plugin components (by their stored name,
-    /// [`Script`](crate::Script) as `onyx.Script`) — with its value as JSON text.
-    pub fn components_of(&mut self, entity: Entity) -> Result<Vec<ComponentEntry>, CtxError> {
-        self.report(ReportFfi::Components, entity.to_bits())
+    /// Every component of `entity`, typed: the built-ins (in the order of
+    /// [`BuiltinId::ALL`](crate::BuiltinId::ALL)), then plugin components by name
+    /// ([`Script`](crate::Script) as `onyx.Script`). A plugin component stored by serde
+    /// whose bytes are not JSON is an error naming it, never an empty value.
+    pub fn components_of(&mut self, entity: Entity) -> Result<Vec<ComponentValue>, CtxError> {
+        let answer = ok(self.host.components_of(entity))?;
+        let mut values: Vec<ComponentValue> = answer
+            .builtins
+            .into_iter()
+            .map(|b| ComponentValue::Builtin(BuiltinValue::from(b)))
+            .collect();
+        for blob in answer.blobs {
+            let name = blob.name.into_string();
+            let value = match blob.format {
+                BlobFormat::Json => {
+                    PluginValue::Json(serde_json::from_slice(&blob.bytes).map_err(|e| {
+                        CtxError::Decode {
+                            component: name.clone(),
+                            message: e.to_string(),
+                        }
+                    })?)
+                }
+                BlobFormat::Raw => PluginValue::Raw(blob.bytes.into_vec()),
+            };
+            values.push(ComponentValue::Plugin { name, value });
+        }
+        Ok(values)
     }
 
-    /// Writes component `type_name` of `entity` from JSON text (the form
-    /// [`Ctx::components_of`] gives). The value is checked like any write: a NaN, infinity,
-    /// unknown field or wrong type is refused with an error saying what, and nothing changes.
-    pub fn set_component_json(
-        &mut self,
-        entity: Entity,
-        type_name: &str,
-        json: &str,
-    ) -> Result<(), CtxError> {
-        ok(self
-            .host
-            .edit_component(entity, ComponentOpFfi::Set, type_name.into(), json.into()))
+    /// Writes one component of `entity` (a built-in, or a plugin component by name), checked
+    /// like every write: a NaN, infinity or out-of-range field is refused with an error
+    /// naming it, and nothing changes.
+    pub fn set_component(&mut self, entity: Entity, value: ComponentValue) -> Result<(), CtxError> {
+        match value {
+            ComponentValue::Builtin(value) => self.set_builtin(entity, value),
+            ComponentValue::Plugin {
+                name,
+                value: PluginValue::Json(json),
+            } => {
+                let bytes = serde_json::to_vec(&json).map_err(|e| CtxError::Encode {
+                    component: name.clone(),
+                    message: e.to_string(),
+                })?;
+                self.raw_set_blob(entity, &name, BlobFormat::Json, bytes.into())
+            }
+            ComponentValue::Plugin {
+                name,
+                value: PluginValue::Raw(bytes),
+            } => self.raw_set_blob(entity, &name, BlobFormat::Raw, bytes.into()),
+        }
     }
 
-    /// [`Ctx::set_component_json`] from any serde value.
-    pub fn set_component_value(
-        &mut self,
-        entity: Entity,
-        type_name: &str,
-        value: &impl Serialize,
-    ) -> Result<(), CtxError> {
-        let json = serde_json::to_string(value).map_err(|e| CtxError::Encode {
-            component: type_name.to_owned(),
-            message: e.to_string(),
-        })?;
-        self.set_component_json(entity, type_name, &json)
-    }
-
-    /// Adds the built-in component `type_name` (or `onyx.Script`) with its default value.
-    pub fn add_component(&mut self, entity: Entity, type_name: &str) -> Result<(), CtxError> {
-        ok(self.host.edit_component(
-            entity,
-            ComponentOpFfi::AddDefault,
-            type_name.into(),
-            "".into(),
-        ))
-    }
-
-    /// Removes component `type_name` (built-in or plugin) from `entity`.
-    pub fn remove_component(&mut self, entity: Entity, type_name: &str) -> Result<(), CtxError> {
-        ok(self
-            .host
-            .edit_component(entity, ComponentOpFfi::Remove, type_name.into(), "".into()))
+    /// Removes one component (a built-in, or a plugin component by name) from `entity`.
+    pub fn remove_component(&mut self, entity: Entity, key: &ComponentKey) -> Result<(), CtxError> {
+        match key {
+            ComponentKey::Builtin(id) => self.remove_builtin(entity, *id),
+            ComponentKey::Plugin(name) => self.raw_remove_blob(entity, name),
+        }
     }
 
     // ----- scenes -----
@@ -96,7 +104,7 @@ impl Ctx<'_> {
     }
 
     /// Replaces the world with the scene file at `path`. A missing or malformed file gives
-    /// an error naming the line and column, and leaves the world untouched.
+    /// [`CtxError::Scene`] naming the file, line and column, and leaves the world untouched.
     pub fn open_scene(&mut self, path: &str) -> Result<(), CtxError> {
         ok(self.host.scene_op(SceneOpFfi::Open, path.into()))
     }
@@ -114,20 +122,20 @@ impl Ctx<'_> {
     // ----- plugins, diagnostics, console -----
 
     /// The loaded plugins, in call order, with their state (running, or faulted and why).
-    pub fn plugins(&mut self) -> Vec<PluginInfo> {
-        self.report(ReportFfi::Plugins, 0).unwrap_or_default()
+    pub fn plugins(&mut self) -> Result<Vec<PluginInfo>, CtxError> {
+        self.report(ReportFfi::Plugins, 0)
     }
 
     /// Figures of the last complete frame: frame time, fixed steps, physics, rendering and
     /// the time spent in each plugin per lifecycle method.
-    pub fn diagnostics(&mut self) -> Diagnostics {
-        self.report(ReportFfi::Diagnostics, 0).unwrap_or_default()
+    pub fn diagnostics(&mut self) -> Result<Diagnostics, CtxError> {
+        self.report(ReportFfi::Diagnostics, 0)
     }
 
     /// Console lines logged after line `seq` (0 for everything still kept), oldest first.
     /// Pass the last line's [`LogLine::seq`] next time to read incrementally.
-    pub fn log_lines_since(&mut self, seq: u64) -> Vec<LogLine> {
-        self.report(ReportFfi::LogLines, seq).unwrap_or_default()
+    pub fn log_lines_since(&mut self, seq: u64) -> Result<Vec<LogLine>, CtxError> {
+        self.report(ReportFfi::LogLines, seq)
     }
 
     // ----- play mode -----
@@ -181,8 +189,8 @@ impl Ctx<'_> {
     }
 
     /// Every registered script (the inspector's drop-down).
-    pub fn registered_scripts(&mut self) -> Vec<ScriptInfo> {
-        self.report(ReportFfi::Scripts, 0).unwrap_or_default()
+    pub fn registered_scripts(&mut self) -> Result<Vec<ScriptInfo>, CtxError> {
+        self.report(ReportFfi::Scripts, 0)
     }
 
     // ----- viewport -----

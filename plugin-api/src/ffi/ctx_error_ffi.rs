@@ -2,7 +2,7 @@
 
 use abi_stable::{std_types::RString, StableAbi};
 
-use crate::{CtxError, Entity};
+use crate::{CtxError, Entity, ParentProblem};
 
 #[repr(u8)]
 #[derive(StableAbi, Clone, Copy, Debug, PartialEq, Eq)]
@@ -10,54 +10,130 @@ pub enum CtxErrorKind {
     NoSuchEntity,
     MissingComponent,
     NonFinite,
+    InvalidValue,
+    InvalidParent,
     Encode,
     Decode,
+    Scene,
+    Unsupported,
     Invalid,
 }
 
-/// [`CtxError`] as plain data.
+/// [`CtxError`] as plain data: the kind and every value a variant can carry (unused ones
+/// empty; entity bits 0 and line 0 stand for none).
 #[repr(C)]
 #[derive(StableAbi, Clone, Debug)]
 pub struct CtxErrorFfi {
     pub kind: CtxErrorKind,
     pub entity: Entity,
+    pub other: Entity,
+    pub problem: ParentProblem,
     pub component: RString,
+    pub field: RString,
     pub message: RString,
+    pub path: RString,
+    pub line: u32,
+    pub column: u32,
+}
+
+const NONE: Entity = Entity::from_bits(0);
+
+fn some(entity: Entity) -> Option<Entity> {
+    (entity != NONE).then_some(entity)
+}
+
+fn number(value: u32) -> Option<u32> {
+    (value != 0).then_some(value)
 }
 
 impl From<CtxError> for CtxErrorFfi {
     fn from(error: CtxError) -> Self {
-        let none = Entity::from_bits(0);
-        let (kind, entity, component, message) = match error {
-            CtxError::NoSuchEntity { entity } => (
-                CtxErrorKind::NoSuchEntity,
-                entity,
-                String::new(),
-                String::new(),
-            ),
-            CtxError::MissingComponent { entity, component } => (
-                CtxErrorKind::MissingComponent,
+        let mut ffi = CtxErrorFfi {
+            kind: CtxErrorKind::Invalid,
+            entity: NONE,
+            other: NONE,
+            problem: ParentProblem::Missing,
+            component: RString::new(),
+            field: RString::new(),
+            message: RString::new(),
+            path: RString::new(),
+            line: 0,
+            column: 0,
+        };
+        match error {
+            CtxError::NoSuchEntity { entity } => {
+                ffi.kind = CtxErrorKind::NoSuchEntity;
+                ffi.entity = entity;
+            }
+            CtxError::MissingComponent { entity, component } => {
+                ffi.kind = CtxErrorKind::MissingComponent;
+                ffi.entity = entity;
+                ffi.component = component.into();
+            }
+            CtxError::NonFinite {
                 entity,
                 component,
-                String::new(),
-            ),
-            CtxError::NonFinite { entity, component } => {
-                (CtxErrorKind::NonFinite, entity, component, String::new())
+                field,
+            } => {
+                ffi.kind = CtxErrorKind::NonFinite;
+                ffi.entity = entity.unwrap_or(NONE);
+                ffi.component = component.into();
+                ffi.field = field.into();
+            }
+            CtxError::InvalidValue {
+                entity,
+                component,
+                field,
+                message,
+            } => {
+                ffi.kind = CtxErrorKind::InvalidValue;
+                ffi.entity = entity.unwrap_or(NONE);
+                ffi.component = component.into();
+                ffi.field = field.into();
+                ffi.message = message.into();
+            }
+            CtxError::InvalidParent {
+                entity,
+                parent,
+                problem,
+            } => {
+                ffi.kind = CtxErrorKind::InvalidParent;
+                ffi.entity = entity;
+                ffi.other = parent;
+                ffi.problem = problem;
             }
             CtxError::Encode { component, message } => {
-                (CtxErrorKind::Encode, none, component, message)
+                ffi.kind = CtxErrorKind::Encode;
+                ffi.component = component.into();
+                ffi.message = message.into();
             }
             CtxError::Decode { component, message } => {
-                (CtxErrorKind::Decode, none, component, message)
+                ffi.kind = CtxErrorKind::Decode;
+                ffi.component = component.into();
+                ffi.message = message.into();
             }
-            CtxError::Invalid { message } => (CtxErrorKind::Invalid, none, String::new(), message),
-        };
-        Self {
-            kind,
-            entity,
-            component: component.into(),
-            message: message.into(),
+            CtxError::Scene {
+                path,
+                line,
+                column,
+                message,
+            } => {
+                ffi.kind = CtxErrorKind::Scene;
+                ffi.path = path.into();
+                ffi.line = line.unwrap_or(0);
+                ffi.column = column.unwrap_or(0);
+                ffi.message = message.into();
+            }
+            CtxError::Unsupported { service } => {
+                ffi.kind = CtxErrorKind::Unsupported;
+                ffi.message = service.into();
+            }
+            CtxError::Invalid { message } => {
+                ffi.kind = CtxErrorKind::Invalid;
+                ffi.message = message.into();
+            }
         }
+        ffi
     }
 }
 
@@ -66,17 +142,46 @@ impl From<CtxErrorFfi> for CtxError {
         let CtxErrorFfi {
             kind,
             entity,
+            other,
+            problem,
             component,
+            field,
             message,
+            path,
+            line,
+            column,
         } = error;
         let component = component.into_string();
+        let field = field.into_string();
         let message = message.into_string();
         match kind {
             CtxErrorKind::NoSuchEntity => CtxError::NoSuchEntity { entity },
             CtxErrorKind::MissingComponent => CtxError::MissingComponent { entity, component },
-            CtxErrorKind::NonFinite => CtxError::NonFinite { entity, component },
+            CtxErrorKind::NonFinite => CtxError::NonFinite {
+                entity: some(entity),
+                component,
+                field,
+            },
+            CtxErrorKind::InvalidValue => CtxError::InvalidValue {
+                entity: some(entity),
+                component,
+                field,
+                message,
+            },
+            CtxErrorKind::InvalidParent => CtxError::InvalidParent {
+                entity,
+                parent: other,
+                problem,
+            },
             CtxErrorKind::Encode => CtxError::Encode { component, message },
             CtxErrorKind::Decode => CtxError::Decode { component, message },
+            CtxErrorKind::Scene => CtxError::Scene {
+                path: path.into_string(),
+                line: number(line),
+                column: number(column),
+                message,
+            },
+            CtxErrorKind::Unsupported => CtxError::Unsupported { service: message },
             CtxErrorKind::Invalid => CtxError::Invalid { message },
         }
     }
@@ -89,6 +194,7 @@ mod tests {
     #[test]
     fn every_variant_survives_the_round_trip() {
         let e = Entity::from_bits(7);
+        let p = Entity::from_bits(9);
         let all = [
             CtxError::NoSuchEntity { entity: e },
             CtxError::MissingComponent {
@@ -96,8 +202,25 @@ mod tests {
                 component: "Name".into(),
             },
             CtxError::NonFinite {
-                entity: e,
+                entity: Some(e),
                 component: "Transform".into(),
+                field: "scale".into(),
+            },
+            CtxError::NonFinite {
+                entity: None,
+                component: "Light".into(),
+                field: "color".into(),
+            },
+            CtxError::InvalidValue {
+                entity: Some(e),
+                component: "Camera".into(),
+                field: "near".into(),
+                message: "must be > 0 m, got -1".into(),
+            },
+            CtxError::InvalidParent {
+                entity: e,
+                parent: p,
+                problem: ParentProblem::Descendant,
             },
             CtxError::Encode {
                 component: "a".into(),
@@ -106,6 +229,21 @@ mod tests {
             CtxError::Decode {
                 component: "c".into(),
                 message: "d".into(),
+            },
+            CtxError::Scene {
+                path: "a.ron".into(),
+                line: Some(3),
+                column: Some(14),
+                message: "scene `a.ron` is malformed at line 3, column 14: x".into(),
+            },
+            CtxError::Scene {
+                path: "b.ron".into(),
+                line: None,
+                column: None,
+                message: "could not read scene `b.ron`".into(),
+            },
+            CtxError::Unsupported {
+                service: "open_scene".into(),
             },
             CtxError::Invalid {
                 message: "nope".into(),

@@ -13,15 +13,16 @@ use abi_stable::{
     std_types::{ROption, RResult, RSlice, RSliceMut, RStr, RString, RVec},
 };
 
-use super::{BlobFfi, BuiltinFfi, BuiltinId, CtxErrorFfi, EntityBlobFfi};
-use super::{ComponentOpFfi, EntityListFfi, ReportFfi, SceneOpFfi, ScreenPointFfi};
+use super::TransformFfi;
+use super::{BlobFfi, BuiltinFfi, ComponentsFfi, CtxErrorFfi, EntityBlobFfi};
+use super::{EntityListFfi, GlobalTransformFfi, ReportFfi, SceneOpFfi, ScreenPointFfi};
 use crate::host::PhysicsCommand;
 use crate::host::PlayCommand;
 use crate::host::{HostServices, PluginRequest};
 use crate::tools::{PlayMode, RenderOverrides};
 use crate::{
-    CtxError, DebugLine, Entity, EntityTransform, InputState, LogLevel, MeshId, RayHit, TextureId,
-    Time,
+    BuiltinId, CtxError, DebugLine, Entity, EntityTransform, InputState, KeepPose, LogLevel,
+    MeshId, RayHit, TextureId, Time,
 };
 
 #[sabi_trait]
@@ -40,7 +41,18 @@ pub trait HostObject {
         blobs: RVec<BlobFfi>,
     ) -> RResult<Entity, CtxErrorFfi>;
     fn despawn(&mut self, entity: Entity) -> RResult<(), CtxErrorFfi>;
+    fn despawn_recursive(&mut self, entity: Entity) -> RResult<(), CtxErrorFfi>;
     fn contains(&self, entity: Entity) -> bool;
+    /// `parent` with bits 0: no parent.
+    fn set_parent(
+        &mut self,
+        entity: Entity,
+        parent: Entity,
+        keep: KeepPose,
+    ) -> RResult<(), CtxErrorFfi>;
+    fn children(&mut self, entity: Entity) -> RResult<RVec<Entity>, CtxErrorFfi>;
+    fn world_pose(&mut self, entity: Entity) -> RResult<GlobalTransformFfi, CtxErrorFfi>;
+    fn set_world_pose(&mut self, entity: Entity, pose: TransformFfi) -> RResult<(), CtxErrorFfi>;
     fn get_builtin(&mut self, entity: Entity, id: BuiltinId) -> RResult<BuiltinFfi, CtxErrorFfi>;
     fn set_builtin(&mut self, entity: Entity, value: BuiltinFfi) -> RResult<(), CtxErrorFfi>;
     fn remove_builtin(&mut self, entity: Entity, id: BuiltinId) -> RResult<(), CtxErrorFfi>;
@@ -67,13 +79,7 @@ pub trait HostObject {
     // ----- tool services (appended; see `host::ToolServices`) -----
     fn entity_list(&mut self) -> EntityListFfi;
     fn host_report(&mut self, report: ReportFfi, argument: u64) -> RResult<RVec<u8>, CtxErrorFfi>;
-    fn edit_component(
-        &mut self,
-        entity: Entity,
-        op: ComponentOpFfi,
-        type_name: RStr<'_>,
-        value: RStr<'_>,
-    ) -> RResult<(), CtxErrorFfi>;
+    fn components_of(&mut self, entity: Entity) -> RResult<ComponentsFfi, CtxErrorFfi>;
     fn scene_op(&mut self, op: SceneOpFfi, path: RStr<'_>) -> RResult<(), CtxErrorFfi>;
     fn scene_path(&mut self) -> ROption<RString>;
     fn play_command(&mut self, command: PlayCommand);
@@ -198,8 +204,36 @@ impl<H: HostServices + ?Sized> HostObject for HostBridge<'_, H> {
         result("despawn", || self.0.despawn(entity))
     }
 
+    fn despawn_recursive(&mut self, entity: Entity) -> RResult<(), CtxErrorFfi> {
+        result("despawn_recursive", || self.0.despawn_recursive(entity))
+    }
+
     fn contains(&self, entity: Entity) -> bool {
         guard("contains", || false, || self.0.contains(entity))
+    }
+
+    fn set_parent(
+        &mut self,
+        entity: Entity,
+        parent: Entity,
+        keep: KeepPose,
+    ) -> RResult<(), CtxErrorFfi> {
+        let parent = (parent.to_bits() != 0).then_some(parent);
+        result("set_parent", || self.0.set_parent(entity, parent, keep))
+    }
+
+    fn children(&mut self, entity: Entity) -> RResult<RVec<Entity>, CtxErrorFfi> {
+        result("children", || self.0.children(entity).map(RVec::from))
+    }
+
+    fn world_pose(&mut self, entity: Entity) -> RResult<GlobalTransformFfi, CtxErrorFfi> {
+        result("world_pose", || self.0.world_pose(entity).map(Into::into))
+    }
+
+    fn set_world_pose(&mut self, entity: Entity, pose: TransformFfi) -> RResult<(), CtxErrorFfi> {
+        result("set_world_pose", || {
+            self.0.set_world_pose(entity, pose.into())
+        })
     }
 
     fn get_builtin(&mut self, entity: Entity, id: BuiltinId) -> RResult<BuiltinFfi, CtxErrorFfi> {
@@ -329,18 +363,13 @@ impl<H: HostServices + ?Sized> HostObject for HostBridge<'_, H> {
         super::tool_bridge::host_report(&mut *self.0, report, argument)
     }
 
-    fn edit_component(
-        &mut self,
-        entity: Entity,
-        op: ComponentOpFfi,
-        type_name: RStr<'_>,
-        value: RStr<'_>,
-    ) -> RResult<(), CtxErrorFfi> {
-        let (type_name, value) = (type_name.as_str(), value.as_str());
-        result("edit_component", || match op {
-            ComponentOpFfi::Set => self.0.set_component_json(entity, type_name, value),
-            ComponentOpFfi::AddDefault => self.0.add_component(entity, type_name),
-            ComponentOpFfi::Remove => self.0.remove_component(entity, type_name),
+    fn components_of(&mut self, entity: Entity) -> RResult<ComponentsFfi, CtxErrorFfi> {
+        result("components_of", || {
+            let (builtins, blobs) = self.0.components_of(entity)?;
+            Ok(ComponentsFfi {
+                builtins: builtins.into_iter().map(Into::into).collect(),
+                blobs: blobs.into_iter().map(Into::into).collect(),
+            })
         })
     }
 

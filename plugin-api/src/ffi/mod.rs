@@ -40,8 +40,10 @@ pub use plugin_object::{
 };
 pub use root_module::{PluginModule, PluginModuleRef, ROOT_SYMBOL};
 pub use script_call_ffi::ScriptCallFfi;
-pub use tool_values::{ComponentOpFfi, EntityListFfi, ReportFfi, SceneOpFfi, ScreenPointFfi};
-pub use values::{BlobFfi, BuiltinFfi, BuiltinId, EntityBlobFfi, TransformFfi};
+pub use tool_values::{EntityListFfi, ReportFfi, SceneOpFfi, ScreenPointFfi};
+pub use values::{
+    BlobFfi, BuiltinFfi, ComponentsFfi, EntityBlobFfi, GlobalTransformFfi, NameFfi, TransformFfi,
+};
 
 // What `export_plugin!` expands to, reached through `$crate`.
 pub use abi_stable::library::{

@@ -8,7 +8,7 @@ use serde::Serialize;
 
 use super::{CtxErrorFfi, ReportFfi};
 use crate::host::ToolServices;
-use crate::{CtxError, Entity};
+use crate::CtxError;
 
 fn json(value: &impl Serialize) -> Result<Vec<u8>, CtxError> {
     serde_json::to_vec(value).map_err(|e| CtxError::Encode {
@@ -17,7 +17,7 @@ fn json(value: &impl Serialize) -> Result<Vec<u8>, CtxError> {
     })
 }
 
-/// Answers `report` (with its numeric `argument`: a sequence number or entity bits) as JSON.
+/// Answers `report` (with its numeric `argument`: a sequence number) as JSON.
 pub fn host_report<H: ToolServices + ?Sized>(
     host: &mut H,
     report: ReportFfi,
@@ -28,7 +28,6 @@ pub fn host_report<H: ToolServices + ?Sized>(
         ReportFfi::Diagnostics => json(&host.diagnostics()),
         ReportFfi::LogLines => json(&host.log_lines_since(argument)),
         ReportFfi::Scripts => json(&host.registered_scripts()),
-        ReportFfi::Components => json(&host.components_of(Entity::from_bits(argument))?),
     }));
     match answer {
         Ok(Ok(bytes)) => RResult::ROk(bytes.into()),

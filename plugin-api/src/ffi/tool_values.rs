@@ -1,5 +1,5 @@
-//! Values the tool services pass across: the entity list as three flat buffers, and the
-//! selectors of the byte-carrying calls (their payloads are JSON of the `tools` types).
+//! Values the tool services pass across: the entity list as flat buffers, and the selectors
+//! of the report and scene calls (reports are JSON of the `tools` types).
 
 use abi_stable::{
     std_types::{RString, RVec},
@@ -9,13 +9,15 @@ use abi_stable::{
 use crate::tools::EntityList;
 use crate::Entity;
 
-/// [`EntityList`] as it crosses: entities, end offsets of each name, all names in one string.
+/// [`EntityList`] as it crosses: entities, end offsets of each name, all names in one string,
+/// and each row's parent row.
 #[repr(C)]
 #[derive(StableAbi, Clone, Debug, Default)]
 pub struct EntityListFfi {
     pub entities: RVec<Entity>,
     pub name_ends: RVec<u32>,
     pub names: RString,
+    pub parents: RVec<u32>,
 }
 
 impl From<EntityList> for EntityListFfi {
@@ -24,6 +26,7 @@ impl From<EntityList> for EntityListFfi {
             entities: list.entities.into(),
             name_ends: list.name_ends.into(),
             names: list.names.into(),
+            parents: list.parents.into(),
         }
     }
 }
@@ -40,24 +43,22 @@ impl From<EntityListFfi> for EntityList {
         {
             name_ends = vec![0; entities.len()];
         }
+        let mut parents = list.parents.into_vec();
+        let rows = entities.len();
+        if parents.len() != rows
+            || parents
+                .iter()
+                .any(|&p| p != EntityList::NO_PARENT && p as usize >= rows)
+        {
+            parents = vec![EntityList::NO_PARENT; rows];
+        }
         Self {
             entities,
             name_ends,
             names,
+            parents,
         }
     }
-}
-
-/// What `edit_component` does.
-#[repr(u8)]
-#[derive(StableAbi, Clone, Copy, Debug, PartialEq, Eq)]
-pub enum ComponentOpFfi {
-    /// Parse the value (JSON) and write it.
-    Set,
-    /// Add the type's default value.
-    AddDefault,
-    /// Remove it.
-    Remove,
 }
 
 /// What `scene_op` does.
@@ -84,8 +85,6 @@ pub enum ReportFfi {
     LogLines,
     /// `Vec<ScriptInfo>`.
     Scripts,
-    /// `Vec<ComponentEntry>` of the entity given (bits in the number argument).
-    Components,
 }
 
 /// A pixel of a view and the view's size, both in pixels.

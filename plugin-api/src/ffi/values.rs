@@ -5,37 +5,8 @@ use abi_stable::{
     StableAbi,
 };
 
-use crate::host::{Blob, BuiltinValue};
-use crate::{
-    BlobFormat, Camera, Collider, Entity, Light, MeshRenderer, Name, RigidBody, Transform,
-};
-
-/// Which built-in component a get or remove asks for.
-#[repr(u8)]
-#[derive(StableAbi, Clone, Copy, Debug, PartialEq, Eq, Hash)]
-pub enum BuiltinId {
-    Name,
-    Transform,
-    MeshRenderer,
-    Camera,
-    Light,
-    RigidBody,
-    Collider,
-}
-
-impl BuiltinId {
-    pub fn name(self) -> &'static str {
-        match self {
-            BuiltinId::Name => "Name",
-            BuiltinId::Transform => "Transform",
-            BuiltinId::MeshRenderer => "MeshRenderer",
-            BuiltinId::Camera => "Camera",
-            BuiltinId::Light => "Light",
-            BuiltinId::RigidBody => "RigidBody",
-            BuiltinId::Collider => "Collider",
-        }
-    }
-}
+use crate::host::Blob;
+use crate::{BlobFormat, BuiltinValue, Entity, GlobalTransform, Name, Transform};
 
 /// A [`Transform`] passed by value: plain floats (translation, rotation xyzw, scale), so no
 /// SIMD type travels through an `extern "C"` signature.
@@ -60,46 +31,49 @@ impl From<TransformFfi> for Transform {
     }
 }
 
-/// A built-in component value.
-#[repr(C, u8)]
-#[derive(StableAbi, Clone, Debug)]
-pub enum BuiltinFfi {
-    Name(RString),
-    Transform(TransformFfi),
-    MeshRenderer(MeshRenderer),
-    Camera(Camera),
-    Light(Light),
-    RigidBody(RigidBody),
-    Collider(Collider),
-}
+/// A [`Name`] as it crosses.
+pub type NameFfi = RString;
 
-impl From<BuiltinValue> for BuiltinFfi {
-    fn from(value: BuiltinValue) -> Self {
-        match value {
-            BuiltinValue::Name(name) => BuiltinFfi::Name(name.0.into()),
-            BuiltinValue::Transform(t) => BuiltinFfi::Transform(t.into()),
-            BuiltinValue::MeshRenderer(v) => BuiltinFfi::MeshRenderer(v),
-            BuiltinValue::Camera(v) => BuiltinFfi::Camera(v),
-            BuiltinValue::Light(v) => BuiltinFfi::Light(v),
-            BuiltinValue::RigidBody(v) => BuiltinFfi::RigidBody(v),
-            BuiltinValue::Collider(v) => BuiltinFfi::Collider(v),
-        }
+impl From<Name> for RString {
+    fn from(name: Name) -> Self {
+        name.0.into()
     }
 }
 
-impl From<BuiltinFfi> for BuiltinValue {
-    fn from(value: BuiltinFfi) -> Self {
-        match value {
-            BuiltinFfi::Name(name) => BuiltinValue::Name(Name(name.into_string())),
-            BuiltinFfi::Transform(t) => BuiltinValue::Transform(t.into()),
-            BuiltinFfi::MeshRenderer(v) => BuiltinValue::MeshRenderer(v),
-            BuiltinFfi::Camera(v) => BuiltinValue::Camera(v),
-            BuiltinFfi::Light(v) => BuiltinValue::Light(v),
-            BuiltinFfi::RigidBody(v) => BuiltinValue::RigidBody(v),
-            BuiltinFfi::Collider(v) => BuiltinValue::Collider(v),
-        }
+impl From<RString> for Name {
+    fn from(name: RString) -> Self {
+        Name(name.into_string())
     }
 }
+
+macro_rules! define_builtin_ffi {
+    ($($id:ident => $key:ident: $ty:ty as $ffi:ty),* $(,)?) => {
+        /// A built-in component value as it crosses: each in its boundary form.
+        #[repr(C, u8)]
+        #[derive(StableAbi, Clone, Debug)]
+        pub enum BuiltinFfi {
+            $($id($ffi),)*
+        }
+
+        impl From<BuiltinValue> for BuiltinFfi {
+            fn from(value: BuiltinValue) -> Self {
+                match value {
+                    $(BuiltinValue::$id(v) => BuiltinFfi::$id(<$ffi>::from(v)),)*
+                }
+            }
+        }
+
+        impl From<BuiltinFfi> for BuiltinValue {
+            fn from(value: BuiltinFfi) -> Self {
+                match value {
+                    $(BuiltinFfi::$id(v) => BuiltinValue::$id(<$ty>::from(v)),)*
+                }
+            }
+        }
+    };
+}
+
+crate::for_each_builtin!(define_builtin_ffi);
 
 /// A named plugin component.
 #[repr(C)]
@@ -137,4 +111,46 @@ pub struct EntityBlobFfi {
     pub entity: Entity,
     pub format: BlobFormat,
     pub bytes: RVec<u8>,
+}
+
+/// Every component of one entity, as `components_of` answers.
+#[repr(C)]
+#[derive(StableAbi, Clone, Debug, Default)]
+pub struct ComponentsFfi {
+    pub builtins: RVec<BuiltinFfi>,
+    pub blobs: RVec<BlobFfi>,
+}
+
+/// A [`GlobalTransform`] as plain floats: the three axis columns, then the translation.
+#[repr(C)]
+#[derive(StableAbi, Clone, Copy, Debug, PartialEq)]
+pub struct GlobalTransformFfi(pub [f32; 12]);
+
+impl From<GlobalTransform> for GlobalTransformFfi {
+    fn from(g: GlobalTransform) -> Self {
+        let a = g.0;
+        let mut v = [0.0; 12];
+        for (i, column) in [
+            a.matrix3.x_axis,
+            a.matrix3.y_axis,
+            a.matrix3.z_axis,
+            a.translation,
+        ]
+        .into_iter()
+        .enumerate()
+        {
+            v[i * 3..i * 3 + 3].copy_from_slice(&column.to_array());
+        }
+        Self(v)
+    }
+}
+
+impl From<GlobalTransformFfi> for GlobalTransform {
+    fn from(GlobalTransformFfi(v): GlobalTransformFfi) -> Self {
+        let column = |i: usize| glam::Vec3A::new(v[i * 3], v[i * 3 + 1], v[i * 3 + 2]);
+        GlobalTransform(glam::Affine3A {
+            matrix3: glam::Mat3A::from_cols(column(0), column(1), column(2)),
+            translation: column(3),
+        })
+    }
 }

@@ -1,10 +1,10 @@
 //! [`HostServices`]: what a host must provide to plugins, in plain Rust.
 
 use crate::glam::Vec3;
-use crate::host::{Blob, BuiltinId, BuiltinValue};
+use crate::host::Blob;
 use crate::{
-    CtxError, DebugLine, Entity, EntityTransform, InputState, LogLevel, MeshId, RayHit, TextureId,
-    Time,
+    BuiltinId, BuiltinValue, CtxError, DebugLine, Entity, EntityTransform, GlobalTransform,
+    InputState, KeepPose, LogLevel, MeshId, RayHit, TextureId, Time, Transform,
 };
 
 /// The services behind [`Ctx`](crate::Ctx), implemented by the host for the duration of one
@@ -34,10 +34,26 @@ pub trait HostServices: crate::host::ToolServices {
     fn step_once(&mut self);
     /// Creates an entity with these components.
     fn spawn(&mut self, builtins: Vec<BuiltinValue>, blobs: Vec<Blob>) -> Result<Entity, CtxError>;
-    /// Removes an entity and all its components.
+    /// Removes an entity and all its components; its children stay where they are in the
+    /// world, as roots.
     fn despawn(&mut self, entity: Entity) -> Result<(), CtxError>;
+    /// Removes an entity with all its descendants.
+    fn despawn_recursive(&mut self, entity: Entity) -> Result<(), CtxError>;
     /// Whether the entity exists.
     fn contains(&self, entity: Entity) -> bool;
+    /// Puts `entity` under `parent` (`None`: makes it a root), keeping its world or local pose.
+    fn set_parent(
+        &mut self,
+        entity: Entity,
+        parent: Option<Entity>,
+        keep: KeepPose,
+    ) -> Result<(), CtxError>;
+    /// The children of `entity`, in the order they were attached.
+    fn children(&mut self, entity: Entity) -> Result<Vec<Entity>, CtxError>;
+    /// The world pose of `entity` (its transform with every ancestor's applied).
+    fn world_pose(&mut self, entity: Entity) -> Result<GlobalTransform, CtxError>;
+    /// Moves `entity` to the world pose `pose`, writing the local transform that puts it there.
+    fn set_world_pose(&mut self, entity: Entity, pose: Transform) -> Result<(), CtxError>;
     /// Reads a built-in component.
     fn get_builtin(&mut self, entity: Entity, id: BuiltinId) -> Result<BuiltinValue, CtxError>;
     /// Inserts or replaces a built-in component.

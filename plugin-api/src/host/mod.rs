@@ -8,10 +8,9 @@
 //!   `play_command.rs`: [`PlayCommand`].
 //! - `gui_input.rs`, `gui_output.rs`: one GUI frame of a plugin, in and out, as egui types.
 //! - `library_error.rs`, `call_error.rs`: what can go wrong.
-//! - `blob.rs`, `builtin_value.rs`: component values as the host stores them.
+//! - `blob.rs`: a plugin component as the host stores it.
 
 mod blob;
-mod builtin_value;
 mod call_error;
 mod gui_input;
 mod gui_output;
@@ -22,9 +21,7 @@ mod plugin_instance;
 mod plugin_library;
 mod tool_services;
 
-pub use crate::__ffi::BuiltinId;
 pub use blob::Blob;
-pub use builtin_value::BuiltinValue;
 pub use call_error::CallError;
 pub use gui_input::GuiInput;
 pub use gui_output::GuiOutput;

@@ -2,16 +2,15 @@
 //! scenes, plugins, diagnostics, console, play mode, scripts, viewport — in plain Rust.
 
 use crate::glam::Vec2;
-use crate::host::PlayCommand;
+use crate::host::{Blob, PlayCommand};
 use crate::tools::{
-    ComponentEntry, Diagnostics, EntityList, LogLine, PlayMode, PluginInfo, Ray, RenderOverrides,
-    ScriptInfo,
+    Diagnostics, EntityList, LogLine, PlayMode, PluginInfo, Ray, RenderOverrides, ScriptInfo,
 };
-use crate::{CtxError, Entity};
+use crate::{BuiltinValue, CtxError, Entity};
 
-fn unsupported(what: &str) -> CtxError {
-    CtxError::Invalid {
-        message: format!("this host does not offer `{what}`"),
+fn unsupported(service: &str) -> CtxError {
+    CtxError::Unsupported {
+        service: service.to_owned(),
     }
 }
 
@@ -20,30 +19,17 @@ fn unsupported(what: &str) -> CtxError {
 /// Implementations must not panic.
 #[allow(unused_variables)]
 pub trait ToolServices {
-    /// Every entity with its name.
+    /// Every entity with its name and parent.
     fn entity_list(&mut self) -> EntityList {
         EntityList::default()
     }
-    /// Every component of `entity`, built-in and plugin, as JSON text.
-    fn components_of(&mut self, entity: Entity) -> Result<Vec<ComponentEntry>, CtxError> {
-        Err(unsupported("components_of"))
-    }
-    /// Parses `json` as component `type_name` and writes it (validated).
-    fn set_component_json(
+    /// Every component of `entity`: the built-ins in list order, then the plugin components
+    /// by name.
+    fn components_of(
         &mut self,
         entity: Entity,
-        type_name: &str,
-        json: &str,
-    ) -> Result<(), CtxError> {
-        Err(unsupported("set_component_json"))
-    }
-    /// Adds component `type_name` with its default value.
-    fn add_component(&mut self, entity: Entity, type_name: &str) -> Result<(), CtxError> {
-        Err(unsupported("add_component"))
-    }
-    /// Removes component `type_name`.
-    fn remove_component(&mut self, entity: Entity, type_name: &str) -> Result<(), CtxError> {
-        Err(unsupported("remove_component"))
+    ) -> Result<(Vec<BuiltinValue>, Vec<Blob>), CtxError> {
+        Err(unsupported("components_of"))
     }
     /// Replaces the world with an empty one.
     fn new_scene(&mut self) -> Result<(), CtxError> {

@@ -1,8 +1,9 @@
 //! What tools (the editor first) read from and ask of the host, through [`Ctx`](crate::Ctx):
-//! plain data types, all serde so they can be shown, saved or sent.
+//! plain data types.
 //!
-//! - `entity_list.rs`: [`EntityList`], every entity with its name, in one call.
-//! - `component_entry.rs`: [`ComponentEntry`], one component of an entity as JSON text.
+//! - `entity_list.rs`: [`EntityList`], every entity with its name and parent, in one call.
+//! - `component_value.rs`: [`ComponentValue`], [`ComponentKey`], [`PluginValue`]: one
+//!   component of an entity, typed.
 //! - `plugin_info.rs`: [`PluginInfo`], [`PluginState`]: the loaded plugins.
 //! - `diagnostics.rs`: [`Diagnostics`], [`PluginTiming`]: what the last frame cost.
 //! - `log_line.rs`: [`LogLine`], one line of the host's console.
@@ -11,7 +12,7 @@
 //! - `render_overrides.rs`: [`RenderOverrides`], the editor's view switches.
 //! - `ray.rs`: [`Ray`], a ray through the viewport.
 
-mod component_entry;
+mod component_value;
 mod diagnostics;
 mod entity_list;
 mod log_line;
@@ -21,7 +22,7 @@ mod ray;
 mod render_overrides;
 mod script;
 
-pub use component_entry::ComponentEntry;
+pub use component_value::{ComponentKey, ComponentValue, PluginValue};
 pub use diagnostics::{Diagnostics, PluginTiming, StageTiming};
 pub use entity_list::EntityList;
 pub use log_line::LogLine;

@@ -20,6 +20,8 @@ pub struct ConsoleState {
     /// Text a line must contain.
     pub filter: String,
     shown: Vec<usize>,
+    /// Why the last lines could not be read.
+    error: Option<String>,
 }
 
 fn level_index(level: &str) -> usize {
@@ -39,7 +41,16 @@ fn level_color(level: &str) -> egui::Color32 {
 impl ConsoleState {
     /// Reads the lines logged since the last call.
     pub fn poll(&mut self, ctx: &mut Ctx) {
-        let new = ctx.log_lines_since(self.last_seq);
+        let new = match ctx.log_lines_since(self.last_seq) {
+            Ok(new) => {
+                self.error = None;
+                new
+            }
+            Err(error) => {
+                self.error = Some(error.to_string());
+                return;
+            }
+        };
         if let Some(last) = new.last() {
             self.last_seq = last.seq;
         }
@@ -61,6 +72,9 @@ impl ConsoleState {
 
     /// Draws the panel.
     pub fn show(&mut self, ui: &mut egui::Ui) {
+        if let Some(error) = &self.error {
+            ui.colored_label(egui::Color32::LIGHT_RED, error);
+        }
         ui.horizontal(|ui| {
             egui::ComboBox::from_id_salt("console-level")
                 .selected_text(LEVELS[self.min_level])

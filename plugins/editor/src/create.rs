@@ -1,7 +1,10 @@
-//! The Create menu's entities: their components as JSON.
+//! The Create menu's entities and their components.
 
 use onyx_plugin_api::glam::Vec3;
-use onyx_plugin_api::{Camera, Collider, Ctx, Light, Material, MeshId, MeshRenderer, Transform};
+use onyx_plugin_api::tools::ComponentValue;
+use onyx_plugin_api::{
+    BuiltinValue, Camera, Collider, Ctx, Light, Material, MeshId, MeshRenderer, Transform,
+};
 
 use crate::state::EditorState;
 
@@ -49,38 +52,33 @@ impl Primitive {
         }
     }
 
-    /// The components besides the name, as (type name, JSON), placed at `at`. Shapes come
-    /// with a collider of their mesh's size (static until a `RigidBody` is added; the plane's
-    /// is an infinite half-space, as a floor wants).
-    pub fn components(self, at: Vec3) -> Vec<(String, String)> {
-        let transform = Transform::from_translation(at);
-        let mut out = vec![json("Transform", &transform)];
-        let mesh = |id: MeshId| {
-            json(
-                "MeshRenderer",
-                &MeshRenderer::new(id).with_material(Material::color(0.8, 0.8, 0.8)),
-            )
-        };
+    /// The components besides the name, placed at `at`. Shapes come with a collider of
+    /// their mesh's size (static until a `RigidBody` is added; the plane's is an infinite
+    /// half-space, as a floor wants).
+    pub fn components(self, at: Vec3) -> Vec<ComponentValue> {
+        let mut out = vec![value(Transform::from_translation(at))];
+        let mesh =
+            |id: MeshId| value(MeshRenderer::new(id).with_material(Material::color(0.8, 0.8, 0.8)));
         match self {
             Primitive::Empty => {}
             Primitive::Cube => {
                 out.push(mesh(MeshId::CUBE));
-                out.push(json("Collider", &Collider::cuboid(0.5, 0.5, 0.5)));
+                out.push(value(Collider::cuboid(0.5, 0.5, 0.5)));
             }
             Primitive::Sphere => {
                 out.push(mesh(MeshId::SPHERE));
-                out.push(json("Collider", &Collider::sphere(0.5)));
+                out.push(value(Collider::sphere(0.5)));
             }
             Primitive::Plane => {
                 out.push(mesh(MeshId::PLANE));
-                out.push(json("Collider", &Collider::plane()));
+                out.push(value(Collider::plane()));
             }
             Primitive::Capsule => {
                 out.push(mesh(MeshId::CAPSULE));
-                out.push(json("Collider", &Collider::capsule(0.5, 0.5)));
+                out.push(value(Collider::capsule(0.5, 0.5)));
             }
-            Primitive::Light => out.push(json("Light", &Light::point(10.0))),
-            Primitive::Camera => out.push(json("Camera", &Camera::perspective(0.8))),
+            Primitive::Light => out.push(value(Light::point(10.0))),
+            Primitive::Camera => out.push(value(Camera::perspective(0.8))),
         }
         out
     }
@@ -100,15 +98,12 @@ pub fn import_obj(ctx: &mut Ctx, state: &mut EditorState, path: &str) {
         .unwrap_or_else(|| "Model".to_owned());
     let at = state.viewport.spawn_point();
     let components = vec![
-        json("Transform", &Transform::from_translation(at)),
-        json("MeshRenderer", &MeshRenderer::new(mesh)),
+        value(Transform::from_translation(at)),
+        value(MeshRenderer::new(mesh)),
     ];
     state.create(ctx, &name, components);
 }
 
-fn json(type_name: &str, value: &impl serde::Serialize) -> (String, String) {
-    (
-        type_name.to_owned(),
-        serde_json::to_string(value).unwrap_or_else(|_| "null".to_owned()),
-    )
+fn value(component: impl Into<BuiltinValue>) -> ComponentValue {
+    ComponentValue::Builtin(component.into())
 }

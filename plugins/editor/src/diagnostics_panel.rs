@@ -13,13 +13,24 @@ const HISTORY: usize = 240;
 #[derive(Debug, Default)]
 pub struct DiagnosticsState {
     last: Diagnostics,
+    /// Why the last figures could not be read.
+    error: Option<String>,
     history: VecDeque<f32>,
 }
 
 impl DiagnosticsState {
     /// Reads the last frame's figures.
     pub fn poll(&mut self, ctx: &mut Ctx) {
-        self.last = ctx.diagnostics();
+        match ctx.diagnostics() {
+            Ok(last) => {
+                self.last = last;
+                self.error = None;
+            }
+            Err(error) => {
+                self.error = Some(error.to_string());
+                return;
+            }
+        }
         self.history.push_back(self.last.frame_interval_ms as f32);
         while self.history.len() > HISTORY {
             self.history.pop_front();
@@ -28,6 +39,9 @@ impl DiagnosticsState {
 
     /// Draws the panel.
     pub fn show(&mut self, ui: &mut egui::Ui) {
+        if let Some(error) = &self.error {
+            ui.colored_label(egui::Color32::LIGHT_RED, error);
+        }
         let d = &self.last;
         let fps = if d.frame_interval_ms > 0.0 {
             1000.0 / d.frame_interval_ms

@@ -1,39 +1,51 @@
 //! [`History`]: the undo/redo stack of edits made in Edit mode.
 
-use onyx_plugin_api::{Ctx, CtxError, Entity};
-
-/// One component of an entity as JSON (type name, value), as `Ctx::components_of` gives it.
-pub type ComponentJson = (String, String);
+use onyx_plugin_api::tools::{ComponentKey, ComponentValue};
+use onyx_plugin_api::{BuiltinValue, Ctx, CtxError, Entity, Parent};
 
 /// One undoable edit.
 #[derive(Clone, Debug, PartialEq)]
 pub enum Command {
     /// A component changed (`None`: absent, so this also covers add and remove; a rename is
-    /// a change of `Name`).
+    /// a change of `Name`, a re-parent a change of `Parent` and `Transform`).
     SetComponent {
         /// The entity edited.
         entity: Entity,
-        /// The component's type name.
-        type_name: String,
-        /// JSON before.
-        old: Option<String>,
-        /// JSON after.
-        new: Option<String>,
+        /// Which component.
+        key: ComponentKey,
+        /// The value before.
+        old: Option<ComponentValue>,
+        /// The value after.
+        new: Option<ComponentValue>,
     },
     /// An entity was created with these components.
     Create {
         /// The entity made.
         entity: Entity,
         /// Its components.
-        components: Vec<ComponentJson>,
+        components: Vec<ComponentValue>,
     },
     /// An entity with these components was deleted.
     Delete {
         /// The entity removed.
         entity: Entity,
         /// Its components.
-        components: Vec<ComponentJson>,
+        components: Vec<ComponentValue>,
     },
+    /// Several edits made as one (a subtree deleted, a re-parent, a multi-selection moved):
+    /// undone last to first, redone first to last.
+    Group(Vec<Command>),
+}
+
+impl Command {
+    /// The edits this one is made of, as one undo step (a single edit stays itself).
+    pub fn group(mut commands: Vec<Command>) -> Option<Command> {
+        match commands.len() {
+            0 => None,
+            1 => commands.pop(),
+            _ => Some(Command::Group(commands)),
+        }
+    }
 }
 
 /// Undo and redo stacks. Edits are applied by the caller, then recorded here.
@@ -43,6 +55,9 @@ pub struct History {
     redo: Vec<Command>,
     /// Frame of the last [`History::record_merged`], to merge a drag into one edit.
     last_merge_frame: Option<u64>,
+    /// Entities recreated (old handle, new handle) by the edit being applied: the rest of a
+    /// group is pointed at the new ones before it runs.
+    recreated: Vec<(Entity, Entity)>,
 }
 
 /// Most edits kept.
@@ -68,20 +83,17 @@ impl History {
         if let (
             true,
             Some(Command::SetComponent {
-                entity,
-                type_name,
-                new,
-                ..
+                entity, key, new, ..
             }),
             Command::SetComponent {
                 entity: e2,
-                type_name: t2,
+                key: k2,
                 new: n2,
                 ..
             },
         ) = (mergeable, self.undo.last_mut(), &command)
         {
-            if entity == e2 && type_name == t2 {
+            if entity == e2 && key == k2 {
                 *new = n2.clone();
                 self.last_merge_frame = Some(frame);
                 return;
@@ -112,8 +124,9 @@ impl History {
             return Ok(());
         };
         self.last_merge_frame = None;
-        let done = self.apply(ctx, &command, true)?;
-        self.redo.push(done);
+        let done = self.apply(ctx, command, true);
+        self.recreated.clear();
+        self.redo.push(done?);
         Ok(())
     }
 
@@ -123,58 +136,97 @@ impl History {
             return Ok(());
         };
         self.last_merge_frame = None;
-        let done = self.apply(ctx, &command, false)?;
-        self.undo.push(done);
+        let done = self.apply(ctx, command, false);
+        self.recreated.clear();
+        self.undo.push(done?);
         Ok(())
     }
 
-    /// Applies `command` backwards (`undo`) or forwards; returns it with the entity handle
+    /// Applies `command` backwards (`undo`) or forwards; returns it with the entity handles
     /// it now refers to (recreating an entity gives it a new handle, which every recorded
-    /// edit then uses).
-    fn apply(&mut self, ctx: &mut Ctx, command: &Command, undo: bool) -> Result<Command, CtxError> {
+    /// edit then uses — parents included).
+    fn apply(&mut self, ctx: &mut Ctx, command: Command, undo: bool) -> Result<Command, CtxError> {
         match command {
             Command::SetComponent {
                 entity,
-                type_name,
+                key,
                 old,
                 new,
             } => {
-                let value = if undo { old } else { new };
-                write_component(ctx, *entity, type_name, value.as_deref())?;
-                Ok(command.clone())
+                let value = if undo { &old } else { &new };
+                write_component(ctx, entity, &key, value.clone())?;
+                Ok(Command::SetComponent {
+                    entity,
+                    key,
+                    old,
+                    new,
+                })
             }
-            Command::Create { entity, components } | Command::Delete { entity, components } => {
-                let despawn = matches!(command, Command::Create { .. }) == undo;
-                if despawn {
-                    ctx.despawn(*entity)?;
-                    Ok(command.clone())
-                } else {
-                    let fresh = respawn(ctx, components)?;
-                    self.remap(*entity, fresh);
-                    let mut moved = command.clone();
-                    if let Command::Create { entity, .. } | Command::Delete { entity, .. } =
-                        &mut moved
-                    {
-                        *entity = fresh;
-                    }
-                    Ok(moved)
+            Command::Create { entity, components } => {
+                self.toggle_existence(ctx, entity, components, true, undo)
+            }
+            Command::Delete { entity, components } => {
+                self.toggle_existence(ctx, entity, components, false, undo)
+            }
+            Command::Group(mut commands) => {
+                if undo {
+                    commands.reverse();
                 }
+                let start = self.recreated.len();
+                let mut done = Vec::with_capacity(commands.len());
+                for mut command in commands {
+                    for &(from, to) in &self.recreated[start..] {
+                        remap_command(&mut command, from, to);
+                    }
+                    done.push(self.apply(ctx, command, undo)?);
+                }
+                if undo {
+                    done.reverse();
+                }
+                // The group as a whole now refers to the new handles too.
+                for &(from, to) in &self.recreated[start..] {
+                    for command in &mut done {
+                        remap_command(command, from, to);
+                    }
+                }
+                if start == 0 {
+                    self.recreated.clear();
+                }
+                Ok(Command::Group(done))
             }
         }
     }
 
-    /// Points every recorded edit of `from` at `to`.
+    /// Undoes or redoes a creation (`create`) or a deletion: despawns the entity, or spawns
+    /// it again with its components (a new handle, which every recorded edit then uses).
+    fn toggle_existence(
+        &mut self,
+        ctx: &mut Ctx,
+        entity: Entity,
+        components: Vec<ComponentValue>,
+        create: bool,
+        undo: bool,
+    ) -> Result<Command, CtxError> {
+        let entity = if create == undo {
+            ctx.despawn(entity)?;
+            entity
+        } else {
+            let fresh = respawn(ctx, &components)?;
+            self.remap(entity, fresh);
+            self.recreated.push((entity, fresh));
+            fresh
+        };
+        Ok(if create {
+            Command::Create { entity, components }
+        } else {
+            Command::Delete { entity, components }
+        })
+    }
+
+    /// Points every recorded edit of `from` at `to`, including parents that name it.
     pub fn remap(&mut self, from: Entity, to: Entity) {
         for command in self.undo.iter_mut().chain(self.redo.iter_mut()) {
-            match command {
-                Command::SetComponent { entity, .. }
-                | Command::Create { entity, .. }
-                | Command::Delete { entity, .. } => {
-                    if *entity == from {
-                        *entity = to;
-                    }
-                }
-            }
+            remap_command(command, from, to);
         }
     }
 
@@ -186,33 +238,76 @@ impl History {
     }
 }
 
+fn remap_command(command: &mut Command, from: Entity, to: Entity) {
+    let swap = |e: &mut Entity| {
+        if *e == from {
+            *e = to;
+        }
+    };
+    match command {
+        Command::SetComponent {
+            entity, old, new, ..
+        } => {
+            swap(entity);
+            for value in [old, new].into_iter().flatten() {
+                *value = remapped(value.clone(), from, to);
+            }
+        }
+        Command::Create { entity, components } | Command::Delete { entity, components } => {
+            swap(entity);
+            for value in components {
+                *value = remapped(value.clone(), from, to);
+            }
+        }
+        Command::Group(commands) => {
+            for command in commands {
+                remap_command(command, from, to);
+            }
+        }
+    }
+}
+
+/// `value` with a `Parent` naming `from` pointed at `to`.
+fn remapped(value: ComponentValue, from: Entity, to: Entity) -> ComponentValue {
+    match value {
+        ComponentValue::Builtin(BuiltinValue::Parent(Parent(p))) if p == from => {
+            ComponentValue::Builtin(BuiltinValue::Parent(Parent(to)))
+        }
+        other => other,
+    }
+}
+
 /// Sets (`Some`) or removes (`None`) one component.
 pub fn write_component(
     ctx: &mut Ctx,
     entity: Entity,
-    type_name: &str,
-    json: Option<&str>,
+    key: &ComponentKey,
+    value: Option<ComponentValue>,
 ) -> Result<(), CtxError> {
-    match json {
-        Some(json) => ctx.set_component_json(entity, type_name, json),
-        None => ctx.remove_component(entity, type_name),
+    match value {
+        Some(value) => ctx.set_component(entity, value),
+        None => ctx.remove_component(entity, key),
     }
 }
 
 /// A new entity with these components.
-pub fn respawn(ctx: &mut Ctx, components: &[ComponentJson]) -> Result<Entity, CtxError> {
+pub fn respawn(ctx: &mut Ctx, components: &[ComponentValue]) -> Result<Entity, CtxError> {
     let entity = ctx.spawn(())?;
-    for (type_name, json) in components {
-        ctx.set_component_json(entity, type_name, json)?;
+    for value in components {
+        ctx.set_component(entity, value.clone())?;
     }
     Ok(entity)
 }
 
-/// Every component of `entity` as (type name, JSON).
-pub fn snapshot(ctx: &mut Ctx, entity: Entity) -> Result<Vec<ComponentJson>, CtxError> {
-    Ok(ctx
-        .components_of(entity)?
+/// Every component of `entity`.
+pub fn snapshot(ctx: &mut Ctx, entity: Entity) -> Result<Vec<ComponentValue>, CtxError> {
+    ctx.components_of(entity)
+}
+
+/// One component of `entity`, if it has it.
+pub fn component(ctx: &mut Ctx, entity: Entity, key: &ComponentKey) -> Option<ComponentValue> {
+    ctx.components_of(entity)
+        .ok()?
         .into_iter()
-        .map(|c| (c.type_name, c.value))
-        .collect())
+        .find(|c| c.key() == *key)
 }

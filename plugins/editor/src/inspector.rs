@@ -1,34 +1,32 @@
 //! The Inspector panel: the selection's name and every component, with fitting widgets for
-//! the built-ins and a JSON tree for plugin components; add and remove components.
+//! the built-ins (a JSON tree for a built-in without one, and for plugin components); add
+//! and remove components. Built-ins are read and written typed; plugin components as JSON
+//! values.
 
+use base64::Engine as _;
 use onyx_plugin_api::glam::{EulerRot, Quat, Vec3};
-use onyx_plugin_api::tools::ComponentEntry;
+use onyx_plugin_api::tools::{ComponentKey, ComponentValue, PluginValue};
 use onyx_plugin_api::{
-    egui, BodyKind, Camera, Collider, ColliderShape, Ctx, Entity, Light, MeshRenderer, Projection,
-    RigidBody, Script, ShadingMode, Transform,
+    egui, BodyKind, BuiltinId, BuiltinValue, Camera, Collider, ColliderShape, Component, Ctx,
+    Entity, Light, MeshRenderer, Parent, Projection, RigidBody, Script, ShadingMode, Transform,
 };
-use serde::de::DeserializeOwned;
-use serde::Serialize;
 
 use crate::history::Command;
 use crate::state::EditorState;
-
-/// Built-in components the Add Component menu offers.
-const ADDABLE: [&str; 7] = [
-    "Transform",
-    "MeshRenderer",
-    "Camera",
-    "Light",
-    "RigidBody",
-    "Collider",
-    "onyx.Script",
-];
 
 /// The inspector's own state.
 #[derive(Debug, Default)]
 pub struct InspectorState {
     /// The name being typed, for which entity.
     name: Option<(Entity, String)>,
+}
+
+/// One change the user made: which component, its value before (`None`: being added) and
+/// after (`None`: removed).
+struct Edit {
+    key: ComponentKey,
+    old: Option<ComponentValue>,
+    new: Option<ComponentValue>,
 }
 
 /// Draws the panel.
@@ -54,87 +52,111 @@ pub fn show(ui: &mut egui::Ui, ctx: &mut Ctx, state: &mut EditorState) {
     ui.weak(format!("entity {entity}"));
     ui.separator();
 
-    let mut edits: Vec<(String, Option<String>, Option<String>)> = Vec::new();
+    let mut edits: Vec<Edit> = Vec::new();
     egui::ScrollArea::vertical()
         .auto_shrink([false, false])
         .show(ui, |ui| {
-            for entry in components.iter().filter(|c| c.type_name != "Name") {
-                let id = egui::Id::new(("inspector", entity, entry.type_name.as_str()));
+            for value in &components {
+                if matches!(value, ComponentValue::Builtin(BuiltinValue::Name(_))) {
+                    continue;
+                }
+                let name = value.name();
+                let id = egui::Id::new(("inspector", entity, name));
                 let mut remove = false;
                 let mut new = None;
-                egui::CollapsingHeader::new(entry.type_name.as_str())
+                egui::CollapsingHeader::new(name)
                     .id_salt(id)
                     .default_open(true)
                     .show(ui, |ui| {
-                        new = component_ui(ui, ctx, entry, id);
-                        if ui
-                            .small_button(format!("Remove {}", entry.type_name))
-                            .clicked()
-                        {
+                        new = component_ui(ui, ctx, state, entity, value, id);
+                        if ui.small_button(format!("Remove {name}")).clicked() {
                             remove = true;
                         }
                     });
-                if remove {
-                    edits.push((entry.type_name.clone(), Some(entry.value.clone()), None));
-                } else if let Some(new) = new {
-                    edits.push((
-                        entry.type_name.clone(),
-                        Some(entry.value.clone()),
-                        Some(new),
-                    ));
+                if remove || new.is_some() {
+                    edits.push(Edit {
+                        key: value.key(),
+                        old: Some(value.clone()),
+                        new: if remove { None } else { new },
+                    });
                 }
             }
             ui.separator();
             ui.menu_button("Add Component", |ui| {
-                for name in ADDABLE {
-                    let present = components.iter().any(|c| c.type_name == name);
-                    if ui.add_enabled(!present, egui::Button::new(name)).clicked() {
-                        edits.push((name.to_owned(), None, None));
+                let present = |key: &ComponentKey| components.iter().any(|c| c.key() == *key);
+                for &id in BuiltinId::ALL {
+                    let key = ComponentKey::Builtin(id);
+                    let Some(default) = id.tool_default() else {
+                        continue; // no sensible default: set it another way (a parent by dragging)
+                    };
+                    if id == BuiltinId::Name {
+                        continue;
                     }
+                    if ui
+                        .add_enabled(!present(&key), egui::Button::new(id.name()))
+                        .clicked()
+                    {
+                        edits.push(Edit {
+                            key,
+                            old: None,
+                            new: Some(ComponentValue::Builtin(default)),
+                        });
+                    }
+                }
+                let script = ComponentKey::Plugin(Script::NAME.to_owned());
+                if ui
+                    .add_enabled(!present(&script), egui::Button::new(Script::NAME))
+                    .clicked()
+                {
+                    edits.push(Edit {
+                        key: script,
+                        old: None,
+                        new: new_script(ctx),
+                    });
                 }
             });
         });
 
-    for (type_name, old, new) in edits {
-        let result = match (&old, &new) {
-            (None, _) => ctx.add_component(entity, &type_name),
-            (Some(_), None) => ctx.remove_component(entity, &type_name),
-            (Some(_), Some(json)) => ctx.set_component_json(entity, &type_name, json),
+    for Edit { key, old, new } in edits {
+        let result = match &new {
+            Some(value) => ctx.set_component(entity, value.clone()),
+            None => ctx.remove_component(entity, &key),
         };
         match result {
             Ok(()) => {
-                let new = if old.is_none() {
-                    current(ctx, entity, &type_name)
-                } else {
-                    new
-                };
+                let set = old.is_some() && new.is_some();
                 let command = Command::SetComponent {
                     entity,
-                    type_name,
-                    old: old.clone(),
+                    key,
+                    old,
                     new,
                 };
-                if old.is_some() && command_is_set(&command) {
+                if set {
                     state.record_merged(ctx, command);
                 } else {
                     state.record(ctx, command);
                 }
             }
-            Err(e) => state.report(ctx, &format!("cannot edit {type_name}"), e),
+            Err(e) => state.report(ctx, &format!("cannot edit {}", key.name()), e),
         }
     }
 }
 
-fn command_is_set(command: &Command) -> bool {
-    matches!(command, Command::SetComponent { new: Some(_), .. })
-}
-
-fn current(ctx: &mut Ctx, entity: Entity, type_name: &str) -> Option<String> {
-    ctx.components_of(entity)
-        .ok()?
-        .into_iter()
-        .find(|c| c.type_name == type_name)
-        .map(|c| c.value)
+/// A new `Script` component: the first registered behaviour with its default parameters.
+fn new_script(ctx: &mut Ctx) -> Option<ComponentValue> {
+    let script = ctx
+        .registered_scripts()
+        .ok()
+        .and_then(|all| all.into_iter().next())
+        .map(|s| Script {
+            name: s.name,
+            params: s.default_params,
+        })
+        .unwrap_or_default();
+    Some(ComponentValue::Plugin {
+        name: Script::NAME.to_owned(),
+        value: PluginValue::Json(serde_json::to_value(script).ok()?),
+    })
 }
 
 fn name_field(
@@ -142,12 +164,14 @@ fn name_field(
     ctx: &mut Ctx,
     state: &mut EditorState,
     entity: Entity,
-    components: &[ComponentEntry],
+    components: &[ComponentValue],
 ) {
     let current: String = components
         .iter()
-        .find(|c| c.type_name == "Name")
-        .and_then(|c| serde_json::from_str(&c.value).ok())
+        .find_map(|c| match c {
+            ComponentValue::Builtin(BuiltinValue::Name(name)) => Some(name.0.clone()),
+            _ => None,
+        })
         .unwrap_or_default();
     let id = egui::Id::new("inspector-name");
     let focused = ui.ctx().memory(|m| m.has_focus(id));
@@ -168,76 +192,155 @@ fn name_field(
     }
 }
 
-/// The widgets of one component; the new JSON when the user changed it.
+/// Edits `value` in place with `edit`; the new value when the user changed it.
+fn edited<T: Clone + PartialEq>(value: &T, edit: impl FnOnce(&mut T)) -> Option<T> {
+    let mut copy = value.clone();
+    edit(&mut copy);
+    (copy != *value).then_some(copy)
+}
+
+/// The widgets of one component; the new value when the user changed it.
 fn component_ui(
     ui: &mut egui::Ui,
     ctx: &mut Ctx,
-    entry: &ComponentEntry,
+    state: &EditorState,
+    entity: Entity,
+    value: &ComponentValue,
     id: egui::Id,
-) -> Option<String> {
-    match entry.type_name.as_str() {
-        "Transform" => typed(ui, &entry.value, transform_ui),
-        "MeshRenderer" => typed(ui, &entry.value, mesh_renderer_ui),
-        "Light" => typed(ui, &entry.value, light_ui),
-        "Camera" => typed(ui, &entry.value, camera_ui),
-        "RigidBody" => typed(ui, &entry.value, rigid_body_ui),
-        "Collider" => typed(ui, &entry.value, collider_ui),
-        "onyx.Script" => {
-            let scripts = ctx.registered_scripts();
-            typed(ui, &entry.value, |ui, script: &mut Script| {
-                egui::ComboBox::from_id_salt(id.with("script"))
-                    .selected_text(if script.name.is_empty() {
-                        "(none)"
-                    } else {
-                        script.name.as_str()
-                    })
-                    .show_ui(ui, |ui| {
-                        for info in &scripts {
-                            if ui
-                                .selectable_label(script.name == info.name, &info.name)
-                                .clicked()
-                                && script.name != info.name
-                            {
-                                script.name = info.name.clone();
-                                script.params = info.default_params.clone();
-                            }
-                        }
-                    });
-                crate::json_tree::edit(ui, "params", &mut script.params, id.with("params"));
-            })
-        }
-        _ => {
-            let mut value: serde_json::Value = serde_json::from_str(&entry.value).ok()?;
-            if crate::json_tree::edit(ui, "", &mut value, id) {
-                Some(value.to_string())
-            } else {
+) -> Option<ComponentValue> {
+    let builtin = |v: BuiltinValue| Some(ComponentValue::Builtin(v));
+    match value {
+        ComponentValue::Builtin(b) => match b {
+            BuiltinValue::Transform(t) => {
+                let new = edited(t, |t| transform_ui(ui, t));
+                world_position_ui(ui, ctx, entity);
+                builtin(new?.into())
+            }
+            BuiltinValue::Parent(Parent(parent)) => {
+                parent_ui(ui, state, *parent);
                 None
             }
+            BuiltinValue::MeshRenderer(m) => {
+                builtin(edited(m, |m| mesh_renderer_ui(ui, m))?.into())
+            }
+            BuiltinValue::Light(l) => builtin(edited(l, |l| light_ui(ui, l))?.into()),
+            BuiltinValue::Camera(c) => builtin(edited(c, |c| camera_ui(ui, c))?.into()),
+            BuiltinValue::RigidBody(r) => builtin(edited(r, |r| rigid_body_ui(ui, r))?.into()),
+            BuiltinValue::Collider(c) => builtin(edited(c, |c| collider_ui(ui, c))?.into()),
+            other => {
+                // A built-in without a widget of its own: its fields as a JSON tree.
+                let mut json = other.to_json();
+                if !crate::json_tree::edit(ui, "", &mut json, id) {
+                    return None;
+                }
+                match other.id().value_from_json(json) {
+                    Ok(value) => builtin(value),
+                    Err(e) => {
+                        ui.colored_label(egui::Color32::LIGHT_RED, e);
+                        None
+                    }
+                }
+            }
+        },
+        ComponentValue::Plugin {
+            name,
+            value: PluginValue::Json(json),
+        } => {
+            let mut json = json.clone();
+            let changed = if name == Script::NAME {
+                script_ui(ui, ctx, &mut json, id)
+            } else {
+                crate::json_tree::edit(ui, "", &mut json, id)
+            };
+            changed.then(|| ComponentValue::Plugin {
+                name: name.clone(),
+                value: PluginValue::Json(json),
+            })
+        }
+        ComponentValue::Plugin {
+            name,
+            value: PluginValue::Raw(bytes),
+        } => {
+            let engine = base64::engine::general_purpose::STANDARD;
+            let mut text = engine.encode(bytes);
+            let changed = ui
+                .horizontal(|ui| {
+                    ui.label(format!("{} bytes, base64", bytes.len()));
+                    ui.text_edit_singleline(&mut text).changed()
+                })
+                .inner;
+            let decoded = engine.decode(text.trim()).ok().filter(|_| changed)?;
+            Some(ComponentValue::Plugin {
+                name: name.clone(),
+                value: PluginValue::Raw(decoded),
+            })
         }
     }
 }
 
-/// Decodes, edits and re-encodes a typed component; `Some(json)` when it changed.
-fn typed<T>(
-    ui: &mut egui::Ui,
-    json: &str,
-    edit: impl FnOnce(&mut egui::Ui, &mut T),
-) -> Option<String>
-where
-    T: DeserializeOwned + Serialize + PartialEq + Clone,
-{
-    let original: T = match serde_json::from_str(json) {
-        Ok(v) => v,
-        Err(e) => {
-            ui.colored_label(egui::Color32::LIGHT_RED, e.to_string());
-            return None;
-        }
+/// The `Script` component: which registered behaviour, and its parameters.
+fn script_ui(ui: &mut egui::Ui, ctx: &mut Ctx, json: &mut serde_json::Value, id: egui::Id) -> bool {
+    let Ok(mut script) = serde_json::from_value::<Script>(json.clone()) else {
+        ui.colored_label(egui::Color32::LIGHT_RED, "not a Script");
+        return crate::json_tree::edit(ui, "", json, id);
     };
-    let mut value = original.clone();
-    edit(ui, &mut value);
-    (value != original)
-        .then(|| serde_json::to_string(&value).ok())
-        .flatten()
+    let scripts = ctx.registered_scripts().unwrap_or_default();
+    let before = script.clone();
+    egui::ComboBox::from_id_salt(id.with("script"))
+        .selected_text(if script.name.is_empty() {
+            "(none)"
+        } else {
+            script.name.as_str()
+        })
+        .show_ui(ui, |ui| {
+            for info in &scripts {
+                if ui
+                    .selectable_label(script.name == info.name, &info.name)
+                    .clicked()
+                    && script.name != info.name
+                {
+                    script.name = info.name.clone();
+                    script.params = info.default_params.clone();
+                }
+            }
+        });
+    crate::json_tree::edit(ui, "params", &mut script.params, id.with("params"));
+    if script == before {
+        return false;
+    }
+    match serde_json::to_value(&script) {
+        Ok(value) => {
+            *json = value;
+            true
+        }
+        Err(_) => false,
+    }
+}
+
+/// The entity's world position, read-only (the Transform above is local to its parent).
+fn world_position_ui(ui: &mut egui::Ui, ctx: &mut Ctx, entity: Entity) {
+    let Ok(pose) = ctx.world_pose(entity) else {
+        return;
+    };
+    let p = pose.translation();
+    ui.horizontal(|ui| {
+        ui.label("World position");
+        ui.weak(format!("X {:.3}  Y {:.3}  Z {:.3}", p.x, p.y, p.z));
+    });
+}
+
+/// The parent, by name (change it by dragging in the hierarchy).
+fn parent_ui(ui: &mut egui::Ui, state: &EditorState, parent: Entity) {
+    let row = state.entities.entities().iter().position(|e| *e == parent);
+    let label = row.map_or_else(
+        || format!("entity {parent}"),
+        |r| state.row_label(r).into_owned(),
+    );
+    ui.horizontal(|ui| {
+        ui.label("Parent");
+        ui.strong(label);
+    });
+    ui.weak("drag it in the Hierarchy to change it");
 }
 
 /// A colour button that writes back only what the user changed: egui's picker goes through

@@ -167,7 +167,14 @@ fn create_menu(ui: &mut egui::Ui, ctx: &mut Ctx, state: &mut EditorState) {
 }
 
 fn plugins_menu(ui: &mut egui::Ui, ctx: &mut Ctx, state: &mut EditorState) {
-    for info in ctx.plugins() {
+    let plugins = match ctx.plugins() {
+        Ok(plugins) => plugins,
+        Err(error) => {
+            ui.colored_label(egui::Color32::LIGHT_RED, error.to_string());
+            Vec::new()
+        }
+    };
+    for info in plugins {
         let status = match &info.state {
             PluginState::Running => "running".to_owned(),
             PluginState::Faulted { stage, message } => format!("faulted in {stage}: {message}"),

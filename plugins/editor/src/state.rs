@@ -2,8 +2,8 @@
 
 use std::path::PathBuf;
 
-use onyx_plugin_api::tools::EntityList;
-use onyx_plugin_api::{Ctx, Entity, Name};
+use onyx_plugin_api::tools::{ComponentValue, EntityList};
+use onyx_plugin_api::{BuiltinValue, Ctx, CtxError, Entity, Name, Parent};
 
 use crate::console::ConsoleState;
 use crate::diagnostics_panel::DiagnosticsState;
@@ -97,8 +97,8 @@ impl EditorState {
     }
 
     /// Spawns an entity from components and records it.
-    pub fn create(&mut self, ctx: &mut Ctx, name: &str, components: Vec<(String, String)>) {
-        let mut all = vec![("Name".to_owned(), json_string(name))];
+    pub fn create(&mut self, ctx: &mut Ctx, name: &str, components: Vec<ComponentValue>) {
+        let mut all = vec![ComponentValue::Builtin(Name::new(name).into())];
         all.extend(components);
         match crate::history::respawn(ctx, &all) {
             Ok(entity) => {
@@ -115,52 +115,61 @@ impl EditorState {
         }
     }
 
-    /// Deletes the selection (undoable).
+    /// The selected entities that have no selected ancestor: acting on each one's subtree
+    /// acts on every selected entity once.
+    pub fn selected_roots(&self) -> Vec<Entity> {
+        self.selection
+            .iter()
+            .copied()
+            .filter(|e| !self.ancestors(*e).any(|a| self.selection.contains(&a)))
+            .collect()
+    }
+
+    /// The ancestors of `entity` in this frame's entity list, nearest first.
+    pub fn ancestors(&self, entity: Entity) -> impl Iterator<Item = Entity> + '_ {
+        let list = &self.entities;
+        let mut row = list.entities().iter().position(|e| *e == entity);
+        std::iter::from_fn(move || {
+            let parent = list.parent(row?)?;
+            row = Some(parent);
+            list.entities().get(parent).copied()
+        })
+        .take(list.len())
+    }
+
+    /// Deletes the selection with everything below it (one undoable step).
     pub fn delete_selection(&mut self, ctx: &mut Ctx) {
-        for entity in std::mem::take(&mut self.selection) {
-            let components = match snapshot(ctx, entity) {
-                Ok(c) => c,
-                Err(e) => {
-                    self.report(ctx, "cannot delete", e);
-                    continue;
-                }
-            };
-            match ctx.despawn(entity) {
-                Ok(()) => self.record(ctx, Command::Delete { entity, components }),
+        let mut done = Vec::new();
+        for root in self.selected_roots() {
+            match delete_subtree(ctx, root) {
+                Ok(commands) => done.extend(commands),
                 Err(e) => self.report(ctx, "cannot delete", e),
             }
         }
+        self.selection.clear();
+        if let Some(command) = Command::group(done) {
+            self.record(ctx, command);
+        }
     }
 
-    /// Duplicates the selection (undoable); the copies become the selection.
+    /// Duplicates the selection with everything below it (one undoable step); the copies
+    /// of the selected entities become the selection.
     pub fn duplicate_selection(&mut self, ctx: &mut Ctx) {
         let mut copies = Vec::new();
-        for entity in std::mem::take(&mut self.selection) {
-            let result = snapshot(ctx, entity).and_then(|mut components| {
-                for (type_name, json) in &mut components {
-                    if type_name == "Name" {
-                        let name: Name = serde_json::from_str(json).unwrap_or_default();
-                        *json = json_string(&format!("{} copy", name.as_str()));
-                    }
-                }
-                let copy = crate::history::respawn(ctx, &components)?;
-                Ok((copy, components))
-            });
-            match result {
-                Ok((copy, components)) => {
-                    self.record(
-                        ctx,
-                        Command::Create {
-                            entity: copy,
-                            components,
-                        },
-                    );
+        let mut done = Vec::new();
+        for root in self.selected_roots() {
+            match duplicate_subtree(ctx, root) {
+                Ok((copy, commands)) => {
                     copies.push(copy);
+                    done.extend(commands);
                 }
                 Err(e) => self.report(ctx, "cannot duplicate", e),
             }
         }
         self.selection = copies;
+        if let Some(command) = Command::group(done) {
+            self.record(ctx, command);
+        }
     }
 
     /// Undoes the last edit.
@@ -194,7 +203,59 @@ impl EditorState {
     }
 }
 
-/// `text` as a JSON string.
-pub fn json_string(text: &str) -> String {
-    serde_json::Value::String(text.to_owned()).to_string()
+/// `entity` and every entity below it, parents before children.
+pub fn subtree(ctx: &mut Ctx, entity: Entity) -> Result<Vec<Entity>, CtxError> {
+    let mut out = vec![entity];
+    let mut i = 0;
+    while i < out.len() {
+        let children = ctx.children(out[i])?;
+        out.extend(children);
+        i += 1;
+    }
+    Ok(out)
+}
+
+/// Deletes `root` with its subtree; the edits, children first (so undoing them, last to
+/// first, brings parents back before their children).
+fn delete_subtree(ctx: &mut Ctx, root: Entity) -> Result<Vec<Command>, CtxError> {
+    let entities = subtree(ctx, root)?;
+    let mut commands = Vec::with_capacity(entities.len());
+    for &entity in entities.iter().rev() {
+        let components = snapshot(ctx, entity)?;
+        commands.push(Command::Delete { entity, components });
+    }
+    ctx.despawn_recursive(root)?;
+    Ok(commands)
+}
+
+/// Copies `root` with its subtree (the copy of `root` named "… copy", under the same
+/// parent; the copies of its descendants under the copies of their parents).
+fn duplicate_subtree(ctx: &mut Ctx, root: Entity) -> Result<(Entity, Vec<Command>), CtxError> {
+    let entities = subtree(ctx, root)?;
+    let mut copy_of: Vec<(Entity, Entity)> = Vec::with_capacity(entities.len());
+    let mut commands = Vec::with_capacity(entities.len());
+    for &entity in &entities {
+        let mut components = snapshot(ctx, entity)?;
+        for value in &mut components {
+            match value {
+                ComponentValue::Builtin(BuiltinValue::Name(name)) if entity == root => {
+                    *name = Name::new(format!("{} copy", name.as_str()));
+                }
+                ComponentValue::Builtin(BuiltinValue::Parent(Parent(parent))) => {
+                    if let Some((_, copy)) = copy_of.iter().find(|(from, _)| from == parent) {
+                        *parent = *copy;
+                    }
+                }
+                _ => {}
+            }
+        }
+        let copy = crate::history::respawn(ctx, &components)?;
+        copy_of.push((entity, copy));
+        commands.push(Command::Create {
+            entity: copy,
+            components,
+        });
+    }
+    let copy = copy_of.first().map_or(root, |(_, copy)| *copy);
+    Ok((copy, commands))
 }

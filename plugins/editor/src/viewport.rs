@@ -2,9 +2,9 @@
 //! view switches and the translate / rotate / scale gizmo.
 
 use onyx_plugin_api::glam::{EulerRot, Mat4, Quat, Vec2, Vec3, Vec4};
-use onyx_plugin_api::tools::RenderOverrides;
+use onyx_plugin_api::tools::{ComponentKey, RenderOverrides};
 use onyx_plugin_api::{
-    egui, gui, Camera, Ctx, Entity, MeshRenderer, Name, PlayMode, ShadingMode, Transform,
+    egui, gui, BuiltinId, Camera, Ctx, Entity, MeshRenderer, Name, PlayMode, ShadingMode, Transform,
 };
 use serde::{Deserialize, Serialize};
 
@@ -93,7 +93,8 @@ pub enum GizmoSpace {
 struct GizmoDrag {
     entity: Entity,
     axis: usize,
-    old_json: Option<String>,
+    /// The entity's local transform (its component) when the drag started, for undo.
+    old: Option<onyx_plugin_api::tools::ComponentValue>,
     start: Transform,
     moved: Vec2,
     screen_axis: Vec2,
@@ -306,7 +307,11 @@ fn fly(ui: &mut egui::Ui, ctx: &mut Ctx, state: &mut EditorState, response: &egu
     }
     let focus = hovered && ui.input(|i| i.key_pressed(egui::Key::F));
     if focus {
-        if let Some(target) = state.primary().and_then(|e| ctx.get::<Transform>(e).ok()) {
+        let target = state
+            .primary()
+            .and_then(|e| ctx.world_pose(e).ok())
+            .map(|pose| pose.to_transform());
+        if let Some(target) = target {
             let cam = &mut state.viewport.camera;
             let distance = 3.0 + target.scale.max_element() * 2.0;
             cam.position = (target.translation - cam.forward() * distance).to_array();
@@ -356,7 +361,7 @@ fn pick(ui: &mut egui::Ui, ctx: &mut Ctx, state: &mut EditorState, response: &eg
     let hit = ctx
         .raycast(ray.0, ray.1, 1000.0)
         .map(|h| h.entity)
-        .or_else(|| pick_mesh(ctx, state.viewport.entity, ray.0, ray.1));
+        .or_else(|| pick_mesh(ctx, state, ray.0, ray.1));
     let multi = ui.input(|i| i.modifiers.command || i.modifiers.shift);
     match hit {
         Some(hit) if multi => state.toggle_selected(hit),
@@ -376,14 +381,26 @@ fn own_ray(cam: &FlyCamera, rect: egui::Rect, pointer: egui::Pos2) -> (Vec3, Vec
     (near, (far - near).normalize_or(Vec3::NEG_Z))
 }
 
-/// The nearest entity with a visible mesh whose bounding sphere the ray meets.
-fn pick_mesh(ctx: &mut Ctx, skip: Option<Entity>, origin: Vec3, dir: Vec3) -> Option<Entity> {
-    let candidates: Vec<(Entity, Transform)> = ctx
+/// The nearest entity with a visible mesh whose bounding sphere (at its world pose) the ray
+/// meets.
+fn pick_mesh(ctx: &mut Ctx, state: &EditorState, origin: Vec3, dir: Vec3) -> Option<Entity> {
+    let skip = state.viewport.entity;
+    let list = &state.entities;
+    let mut candidates: Vec<(Entity, Transform)> = ctx
         .transforms()
         .iter()
         .map(|t| (t.entity, t.transform))
         .filter(|(e, _)| Some(*e) != skip)
         .collect();
+    // Children are where their parents put them.
+    for (entity, t) in &mut candidates {
+        let row = list.entities().iter().position(|e| e == entity);
+        if row.and_then(|r| list.parent(r)).is_some() {
+            if let Ok(pose) = ctx.world_pose(*entity) {
+                *t = pose.to_transform();
+            }
+        }
+    }
     let mut best: Option<(f32, Entity)> = None;
     for (entity, t) in candidates {
         let radius = 0.75 * t.scale.abs().max_element();
@@ -427,7 +444,8 @@ fn gizmo(
     if Some(entity) == state.viewport.entity {
         return false;
     }
-    let Ok(transform) = ctx.get::<Transform>(entity) else {
+    // The gizmo works in world space; the entity's local transform is written back.
+    let Ok(transform) = ctx.world_pose(entity).map(|pose| pose.to_transform()) else {
         return false;
     };
     let origin = transform.translation;
@@ -492,7 +510,7 @@ fn gizmo(
                 state.viewport.drag = Some(GizmoDrag {
                     entity,
                     axis,
-                    old_json: component_json(ctx, entity, "Transform"),
+                    old: crate::history::component(ctx, entity, &TRANSFORM),
                     start: transform,
                     moved: Vec2::ZERO,
                     screen_axis: Vec2::new(screen.x, screen.y),
@@ -518,17 +536,17 @@ fn gizmo(
             snap,
         );
         if t.is_finite() {
-            let _ = ctx.set(entity, t);
+            let _ = ctx.set_world_pose(entity, t);
         }
         if response.drag_stopped() || !ui.input(|i| i.pointer.primary_down()) {
             let finished = state.viewport.drag.take();
             if let Some(drag) = finished {
-                let new = component_json(ctx, entity, "Transform");
-                if new != drag.old_json && ctx.play_mode() == PlayMode::Edit {
+                let new = crate::history::component(ctx, entity, &TRANSFORM);
+                if new != drag.old && ctx.play_mode() == PlayMode::Edit {
                     state.history.record(Command::SetComponent {
                         entity,
-                        type_name: "Transform".to_owned(),
-                        old: drag.old_json,
+                        key: TRANSFORM,
+                        old: drag.old,
                         new,
                     });
                 }
@@ -580,11 +598,5 @@ fn distance_to_segment(p: egui::Pos2, a: egui::Pos2, b: egui::Pos2) -> f32 {
     (a + ab * t).distance(p)
 }
 
-/// One component of `entity` as JSON.
-pub fn component_json(ctx: &mut Ctx, entity: Entity, type_name: &str) -> Option<String> {
-    ctx.components_of(entity)
-        .ok()?
-        .into_iter()
-        .find(|c| c.type_name == type_name)
-        .map(|c| c.value)
-}
+/// The key of the `Transform` component.
+const TRANSFORM: ComponentKey = ComponentKey::Builtin(BuiltinId::Transform);

@@ -17,8 +17,6 @@ use criterion::{criterion_group, Criterion, Throughput};
 use onyx_plugin_api::__ffi::with_ctx;
 use onyx_plugin_api::host::PluginInstance;
 use onyx_plugin_api::{Ctx, Entity, Flow, Name, Plugin, Transform};
-use onyx_runtime::clock::{ClockSettings, FixedClock};
-use onyx_runtime::world::{CallContext, HostState};
 use onyx_runtime::{HeadlessHost, Host, HostConfig};
 
 /// Does nothing: measures pure dispatch.
@@ -81,25 +79,27 @@ fn host_with<P: Plugin>(plugin: P) -> HeadlessHost {
     host
 }
 
-fn call_context_state() -> HostState {
-    HostState::new(FixedClock::new(ClockSettings::default()))
+fn services_host() -> Host {
+    Host::new(HostConfig::default())
 }
 
 fn lifecycle(c: &mut Criterion) {
     let mut group = c.benchmark_group("lifecycle");
-    let mut state = call_context_state();
+    let mut host = services_host();
     let mut instance = PluginInstance::from_plugin("idle", Idle).expect("constructs");
-    group.bench_function("on_update through the ABI", |b| {
-        let mut cx = CallContext::new(&mut state, "idle");
-        b.iter(|| instance.on_update(&mut cx, black_box(1.0 / 60.0)))
+    host.with_services("idle", |cx| {
+        group.bench_function("on_update through the ABI", |b| {
+            b.iter(|| instance.on_update(cx, black_box(1.0 / 60.0)))
+        });
     });
     let mut direct = Idle;
-    let mut state = call_context_state();
-    let mut cx = CallContext::new(&mut state, "idle");
-    with_ctx(&mut cx, |ctx| {
-        group.bench_function("on_update as a direct trait call (peer)", |b| {
-            b.iter(|| black_box(&mut direct).on_update(ctx, black_box(1.0 / 60.0)))
-        });
+    let mut host = services_host();
+    host.with_services("idle", |cx| {
+        with_ctx(cx, |ctx| {
+            group.bench_function("on_update as a direct trait call (peer)", |b| {
+                b.iter(|| black_box(&mut direct).on_update(ctx, black_box(1.0 / 60.0)))
+            });
+        })
     });
     let mut empty = Host::new(HostConfig::default());
     group.bench_function("frame, no plugin", |b| b.iter(|| empty.frame(1.0 / 60.0)));
@@ -161,20 +161,20 @@ fn median(runs: usize, iters: u32, mut f: impl FnMut()) -> f64 {
 }
 
 fn summary() {
-    let mut state = call_context_state();
+    let mut host = services_host();
     let mut instance = PluginInstance::from_plugin("idle", Idle).expect("constructs");
-    let abi = {
-        let mut cx = CallContext::new(&mut state, "idle");
+    let abi = host.with_services("idle", |cx| {
         median(21, 1_000_000, || {
-            black_box(instance.on_update(&mut cx, black_box(1.0 / 60.0)).ok());
+            black_box(instance.on_update(cx, black_box(1.0 / 60.0)).ok());
         })
-    };
-    let mut state = call_context_state();
-    let mut cx = CallContext::new(&mut state, "idle");
+    });
+    let mut host = services_host();
     let mut idle = Idle;
-    let direct = with_ctx(&mut cx, |ctx| {
-        median(21, 1_000_000, || {
-            black_box(black_box(&mut idle).on_update(ctx, black_box(1.0 / 60.0)));
+    let direct = host.with_services("idle", |cx| {
+        with_ctx(cx, |ctx| {
+            median(21, 1_000_000, || {
+                black_box(black_box(&mut idle).on_update(ctx, black_box(1.0 / 60.0)));
+            })
         })
     });
 

@@ -47,8 +47,12 @@ impl Plugin for Probe {
                 let components = time(ROUNDS, || {
                     n += ctx.components_of(first).map_or(0, |c| c.len());
                 });
-                let diagnostics = time(ROUNDS, || n += ctx.diagnostics().plugins.len());
-                let console = time(ROUNDS, || n += ctx.log_lines_since(u64::MAX - 1).len());
+                let diagnostics = time(ROUNDS, || {
+                    n += ctx.diagnostics().map_or(0, |d| d.plugins.len());
+                });
+                let console = time(ROUNDS, || {
+                    n += ctx.log_lines_since(u64::MAX - 1).map_or(0, |l| l.len());
+                });
                 println!("tool services on {ENTITIES} entities (per call, {ROUNDS} calls):");
                 println!("  entity_list          {}", per_call(list, ROUNDS));
                 println!("  components_of        {}", per_call(components, ROUNDS));

@@ -6,9 +6,9 @@ use onyx_plugin_api::{
     egui, Entity, Event, InputEvent, Key, MouseButton, Name, Plugin, WindowEvent,
 };
 
+use crate::entity_id::to_api;
 use crate::plugins::{PluginLoadError, PluginStatus};
 use crate::scene::SceneError;
-use crate::world::entity_id::to_api;
 use crate::{FrameReport, Host, HostConfig};
 
 /// A [`Host`] stepped by hand with a fixed frame time (one fixed step per frame by default),
@@ -134,7 +134,7 @@ impl HeadlessHost {
 
     /// A copy of `entity`'s `T`.
     pub fn get<T: hecs::Component + Clone>(&self, entity: Entity) -> Option<T> {
-        let e = crate::world::entity_id::to_hecs(entity)?;
+        let e = crate::entity_id::to_hecs(entity)?;
         self.host.world().get::<&T>(e).ok().map(|v| (*v).clone())
     }
 

@@ -11,8 +11,8 @@ use crate::plugins::{
     open_library, PluginLoadError, PluginOrigin, PluginSearchPath, PluginSlot, PluginStatus, Stage,
 };
 use crate::scene::{self, SceneError};
+use crate::state::HostState;
 use crate::state_dump::dump_state;
-use crate::world::HostState;
 use crate::HostConfig;
 
 /// What one frame did.
@@ -45,8 +45,10 @@ pub struct Host {
 impl Host {
     /// A host with an empty world.
     pub fn new(config: HostConfig) -> Self {
-        let mut state = HostState::new(FixedClock::new(config.clock));
-        state.assets = crate::render::AssetRegistry::new(config.asset_root);
+        let state = HostState::new(
+            FixedClock::new(config.clock),
+            crate::assets::AssetRegistry::new(config.asset_root),
+        );
         Self {
             state,
             plugins: Vec::new(),
@@ -155,7 +157,7 @@ impl Host {
         };
         let attached = {
             let state = &mut self.state;
-            let mut cx = crate::world::CallContext::new(state, &name);
+            let mut cx = crate::services::CallContext::new(state, &name);
             slot.instance.on_attach(&mut cx, &info)
         };
         if let Err(error) = attached {
@@ -165,7 +167,8 @@ impl Host {
             }));
         }
         self.state
-            .pending_events
+            .io
+            .events
             .push(Event::Platform(PlatformEvent::PluginLoaded {
                 plugin: name.clone(),
             }));
@@ -180,7 +183,8 @@ impl Host {
     fn report(&mut self, error: PluginLoadError) -> PluginLoadError {
         tracing::error!("{error}");
         self.state
-            .pending_events
+            .io
+            .events
             .push(Event::Platform(PlatformEvent::Error {
                 message: error.to_string(),
             }));
@@ -202,7 +206,8 @@ impl Host {
             watcher.unwatch(path);
         }
         self.state
-            .pending_events
+            .io
+            .events
             .push(Event::Platform(PlatformEvent::PluginUnloaded {
                 plugin: name.to_owned(),
             }));
@@ -235,7 +240,7 @@ impl Host {
 
     /// Queues an event for the next dispatch (input events also update the input state then).
     pub fn push_event(&mut self, event: impl Into<Event>) {
-        self.state.pending_events.push(event.into());
+        self.state.io.events.push(event.into());
     }
 
     /// Runs one frame that took `real_dt` seconds of real time.
@@ -243,11 +248,13 @@ impl Host {
         self.init();
         self.begin_tool_frame();
         self.poll_hot_reload();
-        self.state.debug_lines.clear();
+        self.state.io.debug_lines.clear();
         self.dispatch_events();
         let steps = self.state.clock.begin_frame(real_dt);
         for _ in 0..steps {
-            crate::render::previous_transform::snapshot(&mut self.state.world);
+            // The poses being left behind, with whatever this frame spawned or moved so far.
+            self.state.world.propagate();
+            crate::render::previous_pose::snapshot(&mut self.state.world);
             for slot in &mut self.plugins {
                 slot.call(&mut self.state, Stage::FixedUpdate, |p, cx| {
                     p.on_fixed_update(cx)
@@ -256,15 +263,16 @@ impl Host {
             let dt = self.state.clock.fixed_delta() as f32;
             let state = &mut self.state;
             let physics_start = std::time::Instant::now();
-            let raised = state.pending_events.len();
-            state.physics.step(
-                &mut state.world,
-                &state.assets,
-                dt,
-                &mut state.pending_events,
-            );
+            let raised = state.io.events.len();
+            // World poses before physics reads them, and after it moved bodies (their
+            // children follow).
+            state.world.propagate();
+            state
+                .physics
+                .step(&mut state.world, dt, &mut state.io.events);
+            state.world.propagate();
             state.tools.diagnostics.physics += physics_start.elapsed();
-            crate::console::trace_errors("physics", &state.pending_events[raised..]);
+            crate::console::trace_errors("physics", &state.io.events[raised..]);
             self.state.clock.tick();
         }
         let dt = self.state.clock.time().delta;
@@ -272,7 +280,7 @@ impl Host {
             let flow = slot.call(&mut self.state, Stage::Update, |p, cx| p.on_update(cx, dt));
             if flow == Some(Flow::Quit) {
                 tracing::info!(plugin = %slot.name, "plugin returned Flow::Quit");
-                self.state.quit_requested = true;
+                self.state.io.quit_requested = true;
             }
         }
         self.run_scripts(dt);
@@ -280,15 +288,17 @@ impl Host {
             slot.call(&mut self.state, Stage::Render, |p, cx| p.on_render(cx));
         }
         self.draw_gui();
-        let input = self.state.input;
-        self.state.orbit.control(&input);
-        self.state.input.end_frame();
+        // World poses of everything the frame's plugins moved, before drawing.
+        self.state.world.propagate();
+        let input = self.state.io.input;
+        self.state.view.orbit.control(&input);
+        self.state.io.input.end_frame();
         self.state.clock.end_frame();
         self.apply_plugin_requests();
         self.end_tool_frame(steps);
         FrameReport {
             fixed_steps: steps,
-            quit: self.state.quit_requested,
+            quit: self.state.io.quit_requested,
         }
     }
 
@@ -342,7 +352,7 @@ impl Host {
     }
 
     fn dispatch_events(&mut self) {
-        let mut events = std::mem::take(&mut self.state.pending_events);
+        let mut events = std::mem::take(&mut self.state.io.events);
         // Input a plugin's UI takes (a click on its window, typing into its text field)
         // goes to the UI only.
         events.retain(|event| match event {
@@ -359,8 +369,8 @@ impl Host {
         });
         for event in &events {
             match event {
-                Event::Input(input) => self.state.input.apply(input),
-                Event::Window(WindowEvent::Focused(false)) => self.state.input.release_all(),
+                Event::Input(input) => self.state.io.input.apply(input),
+                Event::Window(WindowEvent::Focused(false)) => self.state.io.input.release_all(),
                 _ => {}
             }
         }
@@ -377,7 +387,7 @@ impl Host {
                         });
                     }
                 }
-                Event::Window(WindowEvent::CloseRequested) => self.state.quit_requested = true,
+                Event::Window(WindowEvent::CloseRequested) => self.state.io.quit_requested = true,
                 _ => {}
             }
         }
@@ -385,7 +395,7 @@ impl Host {
 
     /// Whether a plugin or the window asked to quit.
     pub fn quit_requested(&self) -> bool {
-        self.state.quit_requested
+        self.state.io.quit_requested
     }
 
     /// Calls `on_detach` on every running plugin, in reverse load order, once.
@@ -403,12 +413,68 @@ impl Host {
 
     /// The world.
     pub fn world(&self) -> &hecs::World {
-        &self.state.world
+        &self.state.world.ecs
     }
 
-    /// The world, mutably (host-side tools; plugins go through `Ctx`).
+    /// The world, mutably (host-side tools; plugins go through `Ctx`). The scene graph is
+    /// rebuilt from it before the next world poses are read.
     pub fn world_mut(&mut self) -> &mut hecs::World {
-        &mut self.state.world
+        self.state.world.hierarchy.invalidate();
+        &mut self.state.world.ecs
+    }
+
+    /// The world pose of `entity` (its transform with every ancestor's applied), exact
+    /// after every write so far; `None` for an entity that does not exist.
+    pub fn world_pose(
+        &self,
+        entity: onyx_plugin_api::Entity,
+    ) -> Option<onyx_plugin_api::GlobalTransform> {
+        let e = self.state.world.entity(entity)?;
+        Some(onyx_plugin_api::GlobalTransform(
+            self.state.world.world_pose(e),
+        ))
+    }
+
+    /// Every visible mesh and the world pose the renderer draws it at this frame (its world
+    /// pose interpolated between the last two fixed steps): what a screenshot would show,
+    /// without a GPU.
+    pub fn drawn_poses(&self) -> Vec<(onyx_plugin_api::Entity, onyx_plugin_api::GlobalTransform)> {
+        let mut poses = Vec::new();
+        let alpha = self.state.clock.time().alpha;
+        crate::render::drawn_poses(&self.state.world, alpha, |e, pose, _| {
+            poses.push((
+                crate::entity_id::to_api(e),
+                onyx_plugin_api::GlobalTransform(pose),
+            ));
+        });
+        poses.sort_by_key(|(e, _)| *e);
+        poses
+    }
+
+    /// The children of `entity`, in the order they were attached (empty for an entity that
+    /// does not exist).
+    pub fn children(&mut self, entity: onyx_plugin_api::Entity) -> Vec<onyx_plugin_api::Entity> {
+        match self.state.world.entity(entity) {
+            Some(e) => self
+                .state
+                .world
+                .children(e)
+                .into_iter()
+                .map(crate::entity_id::to_api)
+                .collect(),
+            None => Vec::new(),
+        }
+    }
+
+    /// Runs `f` with the services a call of plugin `plugin` is served by: what a plugin's
+    /// `Ctx` reaches, without a plugin (benchmarks measure the boundary with it).
+    pub fn with_services<R>(
+        &mut self,
+        plugin: &str,
+        f: impl FnOnce(&mut dyn onyx_plugin_api::host::HostServices) -> R,
+    ) -> R {
+        let mut cx = crate::services::CallContext::new(&mut self.state, plugin);
+        f(&mut cx)
     }
 
     /// The clock as plugins see it.
@@ -431,7 +497,9 @@ impl Host {
     /// A scene that sets `physics` also sets the fixed step rate and the physics settings.
     pub fn load_scene(&mut self, path: &Path) -> Result<usize, SceneError> {
         let loaded = scene::read_scene(path).and_then(|file| {
-            let n = scene::spawn_scene(&mut self.state.world, &mut self.state.assets, &file, path)?;
+            let world = &mut self.state.world;
+            let n = scene::spawn_scene(&mut world.ecs, &mut world.assets, &file, path)?;
+            world.hierarchy.invalidate();
             if let Some(physics) = file.physics {
                 self.set_physics(physics);
             }
@@ -452,14 +520,14 @@ impl Host {
     /// Saves the world to `path` atomically.
     /// The physics settings chosen by a scene or [`Host::set_physics`] are saved with it.
     pub fn save_scene(&self, path: &Path) -> Result<(), SceneError> {
-        let mut file = scene::scene_from_world(&self.state.world, &self.state.assets);
+        let mut file = scene::scene_from_world(&self.state.world);
         file.physics = self.state.physics.scene_physics().cloned();
         scene::write_scene(&file, path)
     }
 
     /// Simulates with a preset and overrides from now on: sets the fixed step rate (the
     /// physics step rate) and the physics settings. Saved with the scene.
-    pub fn set_physics(&mut self, physics: scene::ScenePhysics) {
+    pub fn set_physics(&mut self, physics: crate::physics::ScenePhysics) {
         if !self.state.clock.set_fixed_hz(physics.fixed_hz()) {
             tracing::warn!(fixed_hz = physics.fixed_hz(), "invalid fixed rate ignored");
         }
@@ -478,9 +546,10 @@ impl Host {
         system: &mut crate::render::RenderSystem,
         target: &mut impl onyx_render::RenderTarget,
     ) -> Result<onyx_render::RenderStats, onyx_render::RenderError> {
-        let raised = self.state.pending_events.len();
-        let stats = crate::gui::render_with_gui(system, &mut self.state, target, &self.gui);
-        crate::console::trace_errors("render", &self.state.pending_events[raised..]);
+        let raised = self.state.io.events.len();
+        let (input, events) = self.state.render_input();
+        let stats = crate::render::render_with_gui(system, input, events, target, &self.gui);
+        crate::console::trace_errors("render", &self.state.io.events[raised..]);
         let stats = stats?;
         self.record_render_stats(&stats);
         Ok(stats)
@@ -493,10 +562,12 @@ impl Host {
         width: u32,
         height: u32,
     ) -> Result<onyx_render::image::RgbaImage, crate::render::ScreenshotError> {
-        let raised = self.state.pending_events.len();
-        let image =
-            crate::gui::render_image_with_gui(system, &mut self.state, width, height, &self.gui);
-        crate::console::trace_errors("render", &self.state.pending_events[raised..]);
+        let raised = self.state.io.events.len();
+        let image = {
+            let (input, events) = self.state.render_input();
+            crate::render::render_image_with_gui(system, input, events, width, height, &self.gui)
+        };
+        crate::console::trace_errors("render", &self.state.io.events[raised..]);
         let image = image?;
         self.record_render_stats(&system.renderer().stats());
         Ok(image)
@@ -513,18 +584,18 @@ impl Host {
     }
 
     /// The mesh and texture ids handed out so far.
-    pub fn assets(&self) -> &crate::render::AssetRegistry {
-        &self.state.assets
+    pub fn assets(&self) -> &crate::assets::AssetRegistry {
+        &self.state.world.assets
     }
 
     /// Registers a model file (as `Ctx::load_mesh` does) and returns its id.
     pub fn load_mesh(&mut self, path: &Path) -> onyx_plugin_api::MeshId {
-        self.state.assets.mesh(path)
+        self.state.world.assets.mesh(path)
     }
 
     /// Registers an image file (as `Ctx::load_texture` does) and returns its id.
     pub fn load_texture(&mut self, path: &Path) -> onyx_plugin_api::TextureId {
-        self.state.assets.texture(path)
+        self.state.world.assets.texture(path)
     }
 
     /// The state as JSON (see [`crate::state_dump`]).

@@ -10,7 +10,7 @@ use crate::plugins::library_watcher::content_hash;
 use crate::plugins::{
     open_library, LibraryWatcher, PluginOrigin, PluginStatus, ReloadError, Stage,
 };
-use crate::world::CallContext;
+use crate::services::CallContext;
 use crate::Host;
 
 fn message(error: &CallError) -> String {
@@ -110,19 +110,21 @@ impl Host {
             Ok(()) => {
                 tracing::info!(plugin = name, "plugin reloaded");
                 self.state
-                    .pending_events
+                    .io
+                    .events
                     .push(Event::Platform(PlatformEvent::PluginReloaded {
                         plugin: name.to_owned(),
                     }));
             }
             Err(error) => {
                 tracing::error!(plugin = name, "{error}; the previous build keeps running");
-                self.state.pending_events.push(Event::Platform(
-                    PlatformEvent::PluginReloadFailed {
+                self.state
+                    .io
+                    .events
+                    .push(Event::Platform(PlatformEvent::PluginReloadFailed {
                         plugin: name.to_owned(),
                         message: error.to_string(),
-                    },
-                ));
+                    }));
             }
         }
         result
@@ -224,7 +226,7 @@ impl Host {
 
     /// Carries out the plugin changes plugins asked for during the frame.
     pub(crate) fn apply_plugin_requests(&mut self) {
-        let requests = std::mem::take(&mut self.state.plugin_requests);
+        let requests = std::mem::take(&mut self.state.io.plugin_requests);
         for request in requests {
             match request {
                 PluginRequest::Reload(name) => {

@@ -53,7 +53,7 @@ impl Host {
 
     /// After `on_update`: this frame's scripts.
     pub(crate) fn run_scripts(&mut self, dt: f32) {
-        crate::scripts::run_scripts(&mut self.plugins, &mut self.state, dt);
+        crate::host_scripts::run_scripts(&mut self.plugins, &mut self.state, dt);
     }
 
     /// End of a frame: a Stop puts the world back (after the scripts were told), and the
@@ -61,7 +61,8 @@ impl Host {
     pub(crate) fn end_tool_frame(&mut self, fixed_steps: u32) {
         if let Some(snapshot) = self.state.tools.play.take_restore() {
             self.run_scripts(0.0);
-            snapshot.restore(&mut self.state.world);
+            snapshot.restore(&mut self.state.world.ecs);
+            self.state.world.hierarchy.invalidate();
             self.state.physics.reset();
             self.state.tools.world_generation += 1;
             tracing::info!(
@@ -90,7 +91,7 @@ impl Host {
             draw_calls: previous.draw_calls,
             triangles: previous.triangles,
             instances: previous.instances,
-            entities: self.state.world.len(),
+            entities: self.state.world.ecs.len(),
             // Filled in when read (see `Host::diagnostics`): building it every frame cost
             // every plugin a few hundred nanoseconds.
             plugins: Vec::new(),
@@ -125,6 +126,6 @@ impl Host {
         state
             .tools
             .play
-            .command(command, &state.world, &mut state.clock);
+            .command(command, &state.world.ecs, &mut state.clock);
     }
 }

@@ -1,64 +1,53 @@
 //! The `--dump-state` JSON: every entity with every component, and the plugins' status.
 
 use base64::Engine as _;
-use onyx_plugin_api::{
-    BlobFormat, Camera, Collider, Light, MeshRenderer, Name, RigidBody, Transform,
-};
+use onyx_plugin_api::{BlobFormat, GlobalTransform, Name, Transform};
 use serde_json::{json, Map, Value};
 
+use crate::entity_id::to_api;
 use crate::plugins::{PluginSlot, PluginStatus};
-use crate::world::entity_id::to_api;
-use crate::world::{HostState, PluginComponents};
+use crate::state::HostState;
+use crate::world::{builtin_storage, PluginComponents};
 
-/// Version of the dump's layout.
-pub const DUMP_FORMAT_VERSION: u32 = 1;
+/// Version of the dump's layout. 2: `Parent` and `GlobalTransform`.
+pub const DUMP_FORMAT_VERSION: u32 = 2;
 
 /// The state of the host as JSON:
 ///
 /// ```json
-/// { "format": 1, "time": {...}, "plugins": [{"name": "spinner", "status": "running"}],
+/// { "format": 2, "time": {...}, "plugins": [{"name": "spinner", "status": "running"}],
 ///   "entities": [{ "id": 4294967296, "name": "cube", "components": {
 ///       "Name": "cube",
 ///       "Transform": {"translation": [0,1,0], "rotation": [0,0,0,1], "scale": [1,1,1]},
+///       "Parent": 4294967297,
+///       "GlobalTransform": {"translation": [0,3,0], "rotation": [0,0,0,1], "scale": [1,1,1]},
 ///       "spinner.spin": {"speed": 1.5},
 ///       "notes.raw": {"base64": "AAEC"} } }] }
 /// ```
 ///
-/// Built-in components are written field by field; plugin components under their name, as
-/// their decoded value when stored by serde, else as `{"base64": ...}`.
+/// Built-in components are written field by field in their scene-file form (meshes and
+/// textures by path; `Parent` as the parent's `id`); every entity with a `Transform` also
+/// shows its world pose as `GlobalTransform` (same fields; the nearest unsheared pose); plugin
+/// components under their name, as their decoded value when stored by serde, else as
+/// `{"base64": ...}`.
 pub fn dump_state(state: &HostState, plugins: &[PluginSlot]) -> Value {
     let world = &state.world;
-    let mut ids: Vec<hecs::Entity> = world.iter().map(|e| e.entity()).collect();
+    let ecs = &world.ecs;
+    let refs = world.refs();
+    let mut ids: Vec<hecs::Entity> = ecs.iter().map(|e| e.entity()).collect();
     ids.sort_by_key(|e| e.to_bits());
     let entities: Vec<Value> = ids
         .into_iter()
         .map(|e| {
             let mut components = Map::new();
-            let name = world.get::<&Name>(e).ok().map(|n| n.0.clone());
-            if let Some(name) = &name {
-                components.insert("Name".into(), json!(name));
+            for value in builtin_storage::all_of(ecs, e) {
+                components.insert(value.name().into(), value.file_json(&refs));
             }
-            if let Ok(t) = world.get::<&Transform>(e) {
-                components.insert("Transform".into(), transform_json(&t));
+            if ecs.satisfies::<&Transform>(e) {
+                let pose = GlobalTransform(world.world_pose(e)).to_transform();
+                components.insert("GlobalTransform".into(), json!(pose));
             }
-            if let Ok(r) = world.get::<&MeshRenderer>(e) {
-                let scene = crate::scene::scene_mesh_renderer(&r, &state.assets);
-                components.insert("MeshRenderer".into(), json!(scene));
-            }
-            if let Ok(c) = world.get::<&Camera>(e) {
-                components.insert("Camera".into(), json!(*c));
-            }
-            if let Ok(l) = world.get::<&Light>(e) {
-                components.insert("Light".into(), json!(*l));
-            }
-            if let Ok(b) = world.get::<&RigidBody>(e) {
-                components.insert("RigidBody".into(), json!(*b));
-            }
-            if let Ok(c) = world.get::<&Collider>(e) {
-                let scene = crate::scene::scene_collider(&c, &state.assets);
-                components.insert("Collider".into(), json!(scene));
-            }
-            if let Ok(map) = world.get::<&PluginComponents>(e) {
+            if let Ok(map) = ecs.get::<&PluginComponents>(e) {
                 for (key, blob) in &map.0 {
                     let value = match blob.format {
                         BlobFormat::Json => serde_json::from_slice(&blob.bytes).ok(),
@@ -70,6 +59,7 @@ pub fn dump_state(state: &HostState, plugins: &[PluginSlot]) -> Value {
                     components.insert(key.clone(), value);
                 }
             }
+            let name = ecs.get::<&Name>(e).ok().map(|n| n.0.clone());
             json!({
                 "id": to_api(e).to_bits(),
                 "name": name,
@@ -95,13 +85,5 @@ pub fn dump_state(state: &HostState, plugins: &[PluginSlot]) -> Value {
         },
         "plugins": plugins,
         "entities": entities,
-    })
-}
-
-fn transform_json(t: &Transform) -> Value {
-    json!({
-        "translation": t.translation.to_array(),
-        "rotation": t.rotation.to_array(),
-        "scale": t.scale.to_array(),
     })
 }

@@ -357,3 +357,54 @@ fn physics_preset_comes_from_the_scene_and_the_command_line_wins() {
         stderr(&out)
     );
 }
+
+#[test]
+fn a_scene_with_a_hierarchy_dumps_each_parent_and_world_pose() {
+    let dir = tempfile::tempdir().unwrap();
+    let scene = dir.path().join("rig.ron");
+    std::fs::write(
+        &scene,
+        r#"(version: 2, entities: [
+            (id: Some(1), name: Some("base"), transform: Some((translation: (0.0, 1.0, 0.0), rotation: (0.0, 0.0, 0.38268343, 0.9238795)))),
+            (name: Some("tip"), parent: Some(1), transform: Some((translation: (2.0, 0.0, 0.0), scale: (0.5, 0.5, 0.5)))),
+        ])"#,
+    )
+    .unwrap();
+    let dump_path = dir.path().join("dump.json");
+    let out = onyx(&[
+        "run",
+        "--headless",
+        "--frames",
+        "2",
+        "--scene",
+        scene.to_str().unwrap(),
+        "--dump-state",
+        dump_path.to_str().unwrap(),
+    ]);
+    assert!(out.status.success(), "{}", stderr(&out));
+    let dump = read_json(&dump_path);
+    let base = entity(&dump, "base");
+    let tip = entity(&dump, "tip");
+    assert_eq!(tip["components"]["Parent"], base["id"]);
+    assert!(base["components"].get("Parent").is_none());
+    // 45° about Z: the tip's 2 m along local X lands at (√2, 1 + √2, 0), scaled 0.5.
+    let global = &tip["components"]["GlobalTransform"];
+    let t: Vec<f64> = serde_json::from_value(global["translation"].clone()).unwrap();
+    let s: Vec<f64> = serde_json::from_value(global["scale"].clone()).unwrap();
+    let r: Vec<f64> = serde_json::from_value(global["rotation"].clone()).unwrap();
+    let root2 = std::f64::consts::SQRT_2;
+    for (got, want) in t.iter().zip([root2, 1.0 + root2, 0.0]) {
+        assert!((got - want).abs() < 1e-5, "translation {t:?}");
+    }
+    for got in &s {
+        assert!((got - 0.5).abs() < 1e-5, "scale {s:?}");
+    }
+    for (got, want) in r.iter().zip([0.0, 0.0, 0.38268343, 0.9238795]) {
+        assert!((got - want).abs() < 1e-5, "rotation {r:?}");
+    }
+    assert_eq!(
+        tip["components"]["Transform"]["translation"],
+        serde_json::json!([2.0, 0.0, 0.0]),
+        "the local transform is what the file says"
+    );
+}

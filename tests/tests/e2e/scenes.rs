@@ -106,7 +106,7 @@ fn scene_values_are_checked_before_anything_is_spawned() {
     let dir = tempfile::tempdir().unwrap();
     let cases = [
         ("version.ron", "(version: 99, entities: [])", "format version 99"),
-        ("nan.ron", "(version: 1, entities: [(name: Some(\"a\")), (transform: Some((translation: (NaN, 0.0, 0.0))))])", "entity #1: its transform holds NaN"),
+        ("nan.ron", "(version: 1, entities: [(name: Some(\"a\")), (transform: Some((translation: (NaN, 0.0, 0.0))))])", "entity #1: its transform `translation` holds NaN"),
         ("base64.ron", "(version: 1, entities: [(components: {\"x\": Raw(\"***\")})])", "not valid base64"),
         ("unknown.ron", "(version: 1, entities: [(nmae: Some(\"typo\"))])", "nmae"),
         ("empty.ron", "", "line 1"),
@@ -228,4 +228,143 @@ fn a_scene_with_bad_physics_settings_is_refused_and_changes_nothing() {
         matches!(error, SceneError::Parse { line: 1, .. }),
         "{error}"
     );
+}
+
+/// A version-2 scene: children before their parents, ids that are not positions, three
+/// levels, rotation and scale on the way down.
+const TREE: &str = r#"(
+    version: 2,
+    entities: [
+        (name: Some("finger"), parent: Some(7), transform: Some((translation: (0.0, 0.5, 0.0)))),
+        (id: Some(40), name: Some("body"), transform: Some((translation: (1.0, 2.0, 3.0), rotation: (0.0, 0.70710677, 0.0, 0.70710677), scale: (2.0, 2.0, 2.0)))),
+        (id: Some(7), name: Some("hand"), parent: Some(40), transform: Some((translation: (1.0, 0.0, 0.0)))),
+        (name: Some("loose")),
+    ],
+)"#;
+
+fn world_translation(host: &HeadlessHost, name: &str) -> onyx_plugin_api::glam::Vec3 {
+    let (e, _) = host.find::<Name>(name).unwrap();
+    host.host().world_pose(e).unwrap().translation()
+}
+
+#[test]
+fn a_version_2_scene_with_a_hierarchy_loads_its_world_poses_and_saves_the_same_tree() {
+    use onyx_plugin_api::glam::Vec3;
+    let dir = tempfile::tempdir().unwrap();
+    let path = write(dir.path(), "tree.ron", TREE);
+    let mut host = HeadlessHost::new();
+    assert_eq!(host.load_scene(&path).unwrap(), 4);
+    host.step(1);
+    // body: at (1, 2, 3), turned 90° about Y (local +X → world -Z), scaled 2.
+    // hand: 1 m along body's X → 2 m along world -Z. finger: 0.5 m up → 1 m up.
+    let near = |a: Vec3, b: Vec3| (a - b).length() < 1e-5;
+    let hand = world_translation(&host, "hand");
+    assert!(near(hand, Vec3::new(1.0, 2.0, 1.0)), "hand at {hand}");
+    let finger = world_translation(&host, "finger");
+    assert!(near(finger, Vec3::new(1.0, 3.0, 1.0)), "finger at {finger}");
+
+    let saved = dir.path().join("saved.ron");
+    host.host().save_scene(&saved).unwrap();
+    let file = read_scene(&saved).unwrap();
+    assert_eq!(file.version, onyx_runtime::scene::SCENE_FORMAT_VERSION);
+    let by_name = |name: &str| {
+        file.entities
+            .iter()
+            .find(|e| e.name.as_deref() == Some(name))
+            .unwrap()
+            .clone()
+    };
+    assert_eq!(by_name("finger").parent, by_name("hand").id);
+    assert_eq!(by_name("hand").parent, by_name("body").id);
+    assert!(by_name("hand").id.is_some() && by_name("body").parent.is_none());
+    assert!(by_name("loose").id.is_none(), "only parents need an id");
+
+    let mut again = HeadlessHost::new();
+    again.load_scene(&saved).unwrap();
+    again.step(1);
+    for name in ["body", "hand", "finger"] {
+        assert!(
+            near(
+                world_translation(&again, name),
+                world_translation(&host, name)
+            ),
+            "{name} moved in the round trip"
+        );
+    }
+}
+
+#[test]
+fn a_dangling_cyclic_or_repeated_parent_reference_is_refused_naming_the_entity() {
+    let dir = tempfile::tempdir().unwrap();
+    let cases = [
+        (
+            "dangling.ron",
+            "(version: 2, entities: [(name: Some(\"a\")), (name: Some(\"orphan\"), parent: Some(9))])",
+            "entity #1 (\"orphan\"): its parent is id 9, which no entity of the file has",
+        ),
+        (
+            "cycle.ron",
+            "(version: 2, entities: [(id: Some(1), name: Some(\"x\"), parent: Some(2)), (id: Some(2), name: Some(\"y\"), parent: Some(1))])",
+            "entity #0 (\"x\"): its parent chain loops back to it",
+        ),
+        (
+            "self.ron",
+            "(version: 2, entities: [(name: Some(\"a\")), (id: Some(5), name: Some(\"me\"), parent: Some(5))])",
+            "entity #1 (\"me\"): its parent chain loops back to it",
+        ),
+        (
+            "twice.ron",
+            "(version: 2, entities: [(id: Some(3), name: Some(\"first\")), (id: Some(3))])",
+            "entity #1: its id 3 is already the id of entity #0",
+        ),
+    ];
+    for (file, text, expected) in cases {
+        let path = write(dir.path(), file, text);
+        let mut host = HeadlessHost::new();
+        let error = host.load_scene(&path).unwrap_err();
+        assert!(
+            matches!(error, SceneError::InvalidEntity { .. }),
+            "{file}: {error:?}"
+        );
+        assert!(error.to_string().contains(expected), "{file}: {error}");
+        assert_eq!(entity_count(&host), 0, "{file}: something spawned");
+    }
+}
+
+#[test]
+fn every_scene_file_in_the_repository_still_loads() {
+    fn scenes(dir: &Path, out: &mut Vec<PathBuf>) {
+        for entry in std::fs::read_dir(dir).unwrap().flatten() {
+            let path = entry.path();
+            if path.is_dir() {
+                scenes(&path, out);
+            } else if path.extension().is_some_and(|e| e == "ron") {
+                out.push(path);
+            }
+        }
+    }
+    let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("..");
+    let mut files = Vec::new();
+    scenes(&root.join("assets/scenes"), &mut files);
+    assert!(files.len() >= 10, "found only {files:?}");
+    for path in files {
+        let mut host =
+            HeadlessHost::with_config(onyx_runtime::HostConfig::default().asset_root(root.clone()));
+        let count = host
+            .load_scene(&path)
+            .unwrap_or_else(|e| panic!("{}: {e}", path.display()));
+        assert!(count > 0, "{}: no entities", path.display());
+        host.step(2);
+        let dump = host.dump_state();
+        for entity in dump["entities"].as_array().unwrap() {
+            let components = &entity["components"];
+            if components.get("Transform").is_some() {
+                assert!(
+                    components.get("GlobalTransform").is_some(),
+                    "{}: {entity}",
+                    path.display()
+                );
+            }
+        }
+    }
 }

@@ -16,7 +16,7 @@ pub use event_trace::trace_errors;
 use tracing_subscriber::layer::SubscriberExt;
 
 /// Makes the console capture records at `INFO` and above when nobody has installed a global
-/// `tracing` subscriber yet (a [`HeadlessHost`](crate::HeadlessHost) in a test, a program
+/// `tracing` subscriber yet (a `HeadlessHost` in a test, a program
 /// embedding the runtime). The `onyx` binary installs [`ConsoleLayer`] in its own subscriber.
 pub fn install_default() {
     if tracing::dispatcher::has_been_set() {

@@ -5,7 +5,7 @@ use std::time::Duration;
 
 use onyx_plugin_api::tools::{PluginTiming, StageTiming};
 
-use crate::plugins::Stage;
+use crate::stage::Stage;
 
 /// Lifecycle methods timed (index = position in [`Stage::ALL_TIMED`]).
 const STAGES: usize = Stage::ALL_TIMED.len();

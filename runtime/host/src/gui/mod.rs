@@ -8,7 +8,6 @@
 //! - `egui_keys.rs`: Onyx keys and buttons as egui's.
 //! - `gui_textures.rs`: [`GuiTextures`], plugin textures under host-unique ids.
 //! - `gui_painter.rs`: [`GuiPainter`], egui-wgpu drawing over a rendered frame.
-//! - `gui_render.rs`: the scene and the GUIs drawn together ([`GuiGpu`] per renderer).
 //! - `viewport_request.rs`: where a plugin shows the scene viewport.
 //! - `widget_query.rs`: a widget's rectangle by label, from the AccessKit tree.
 
@@ -16,7 +15,6 @@ mod egui_keys;
 mod gui_frame;
 mod gui_input_builder;
 mod gui_painter;
-mod gui_render;
 mod gui_system;
 mod gui_textures;
 mod viewport_request;
@@ -25,6 +23,5 @@ mod widget_query;
 pub use gui_frame::GuiFrame;
 pub use gui_input_builder::{GuiInputBuilder, DEFAULT_SCREEN_SIZE};
 pub use gui_painter::GuiPainter;
-pub use gui_render::{render_image_with_gui, render_with_gui, GuiGpu};
 pub use gui_system::GuiSystem;
 pub use gui_textures::{GuiTexture, GuiTextures, HOST_VIEWPORT_TEXTURE};

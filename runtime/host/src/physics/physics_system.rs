@@ -2,7 +2,7 @@
 
 use std::collections::HashMap;
 
-use onyx_physics::glam::Vec3;
+use onyx_physics::glam::{Affine3A, Quat, Vec3};
 use onyx_physics::{
     BodyHandle, BodyType, ColliderDesc, ContactEventKind, MassProperties, PhysicsSettings,
     PhysicsWorld, Pose, QueryFilter, RigidBodyDesc,
@@ -13,11 +13,12 @@ use onyx_plugin_api::{
     RayHit, RigidBody, Transform,
 };
 
-use crate::render::AssetRegistry;
-use crate::scene::ScenePhysics;
-
-use super::entity_map::EntityMap;
-use crate::world::entity_id::{to_api, to_hecs};
+use super::ScenePhysics;
+use crate::assets::AssetRegistry;
+use crate::entity_id::{to_api, to_hecs};
+use crate::entity_map::EntityMap;
+use crate::hierarchy::world_pose;
+use crate::world::WorldState;
 
 /// What the host keeps per simulated entity.
 #[derive(Clone, Debug)]
@@ -25,10 +26,16 @@ struct Link {
     body: BodyHandle,
     /// The components the body was built from: a change rebuilds it.
     built_from: (Option<RigidBody>, Collider),
-    /// The transform and velocities written back after the last step: a difference means
-    /// the user moved the entity.
+    /// The local transform and velocities written back after the last step (or seen at the
+    /// last sync): a difference means the user moved the entity.
     written: Transform,
+    /// The world pose the body had after the last step: a difference means the entity moved
+    /// with its parents.
+    written_pose: Pose,
     written_velocity: (Vec3, Vec3),
+    /// A parent moved a dynamic body's entity: its local transform must be written back even
+    /// while the body sleeps.
+    parent_moved: bool,
     /// The last write-back was of a sleeping or static body: until it wakes or moves there
     /// is nothing new to write.
     settled: bool,
@@ -68,8 +75,28 @@ impl Default for PhysicsSystem {
     }
 }
 
-fn body_desc(rb: Option<&RigidBody>, t: &Transform) -> RigidBodyDesc {
-    let pose_desc = |d: RigidBodyDesc| d.translation(t.translation).rotation(t.rotation);
+/// The rigid part (translation and rotation) of a world pose: bodies have no scale.
+fn rigid(pose: &Affine3A) -> Pose {
+    let (_, rotation, translation) = pose.to_scale_rotation_translation();
+    Pose {
+        translation,
+        rotation: rotation.normalize(),
+    }
+}
+
+/// The world pose of the entity of transform `t` as physics takes it.
+fn body_pose(world: &WorldState, e: hecs::Entity, t: &Transform) -> Pose {
+    match world.hierarchy.cached_world(e) {
+        Some(pose) => rigid(&pose),
+        None => Pose {
+            translation: t.translation,
+            rotation: t.rotation,
+        },
+    }
+}
+
+fn body_desc(rb: Option<&RigidBody>, pose: &Pose) -> RigidBodyDesc {
+    let pose_desc = |d: RigidBodyDesc| d.translation(pose.translation).rotation(pose.rotation);
     let Some(rb) = rb else {
         return pose_desc(RigidBodyDesc::fixed());
     };
@@ -180,14 +207,14 @@ impl PhysicsSystem {
 
     /// One fixed step of `dt` seconds: components → bodies, queued commands, the step, then
     /// poses and state back into the components and contacts into `events`.
-    pub fn step(
-        &mut self,
-        world: &mut hecs::World,
-        assets: &AssetRegistry,
-        dt: f32,
-        events: &mut Vec<Event>,
-    ) {
-        self.sync(world, assets, events);
+    ///
+    /// Bodies live in world space: each is built at its entity's world pose (the scene
+    /// graph's, brought up to date before the step). A static or kinematic body follows its
+    /// entity's world pose, so it moves with its parents; a dynamic body is moved only by
+    /// physics and by writes to its own transform, and its result is written back as the
+    /// local transform relative to its parent.
+    pub fn step(&mut self, world: &mut WorldState, dt: f32, events: &mut Vec<Event>) {
+        self.sync(world, events);
         if self.links.is_empty() && self.departed.is_empty() {
             self.commands.clear();
             return;
@@ -287,26 +314,38 @@ impl PhysicsSystem {
     /// Components → bodies in one pass over the simulated entities: builds new bodies,
     /// rebuilds changed ones, removes those whose entity or components are gone, and carries
     /// moved transforms and set velocities over. Unchanged entities cost one comparison.
-    fn sync(&mut self, world: &mut hecs::World, assets: &AssetRegistry, events: &mut Vec<Event>) {
+    fn sync(&mut self, world: &mut WorldState, events: &mut Vec<Event>) {
         self.sync_epoch += 1;
         let epoch = self.sync_epoch;
         let mut seen = 0;
-        let mut rebuild: Vec<(hecs::Entity, Transform, Collider, Option<RigidBody>)> = Vec::new();
+        let mut rebuild: Vec<(hecs::Entity, Transform, Pose, Collider, Option<RigidBody>)> =
+            Vec::new();
         for (e, t, collider, rb) in world
+            .ecs
             .query::<(hecs::Entity, &Transform, &Collider, Option<&RigidBody>)>()
             .iter()
         {
+            let pose = body_pose(world, e, t);
             let link = match self.links.get_mut(e) {
                 Some(link) if link.built_from == (rb.copied().map(config_only), *collider) => link,
                 _ => {
-                    rebuild.push((e, *t, *collider, rb.copied()));
+                    rebuild.push((e, *t, pose, *collider, rb.copied()));
                     continue;
                 }
             };
             link.seen = epoch;
             seen += 1;
-            let moved =
+            let dynamic = rb.is_some_and(|rb| rb.kind == BodyKind::Dynamic);
+            let local_moved =
                 t.translation != link.written.translation || t.rotation != link.written.rotation;
+            let world_moved = pose != link.written_pose;
+            // A dynamic body keeps its place in the world when only its parents moved; its
+            // local transform is rewritten relative to them.
+            let moved = if dynamic { local_moved } else { world_moved };
+            if dynamic && world_moved && !local_moved {
+                link.parent_moved = true;
+                link.settled = false;
+            }
             let new_velocity = rb.is_some_and(|rb| {
                 (rb.linear_velocity, rb.angular_velocity) != link.written_velocity
             });
@@ -317,16 +356,13 @@ impl PhysicsSystem {
                 continue;
             };
             if moved {
-                let pose = Pose {
-                    translation: t.translation,
-                    rotation: t.rotation,
-                };
                 if rb.is_some_and(|rb| rb.kind == BodyKind::Kinematic) {
                     body.set_next_kinematic_pose(pose);
                 } else {
                     body.set_pose(pose);
                 }
                 link.written = *t;
+                link.written_pose = pose;
                 link.settled = false;
             }
             if let (true, Some(rb)) = (new_velocity, rb) {
@@ -350,17 +386,17 @@ impl PhysicsSystem {
         }
         if !self.failed.is_empty() {
             self.failed
-                .retain(|e, _| world.get::<&Collider>(*e).is_ok());
+                .retain(|e, _| world.ecs.satisfies::<&Collider>(*e));
         }
-        for (e, t, collider, rb) in rebuild {
+        for (e, t, pose, collider, rb) in rebuild {
             self.remove(e);
             if self.failed.get(&e) == Some(&collider) {
                 continue;
             }
-            match Self::collider_desc(&collider, assets, to_api(e)) {
+            match Self::collider_desc(&collider, &world.assets, to_api(e)) {
                 Ok(desc) => {
                     self.failed.remove(&e);
-                    self.build(e, &t, rb.as_ref(), collider, desc);
+                    self.build(e, &t, &pose, rb.as_ref(), collider, desc);
                 }
                 Err(event) => {
                     events.push(event);
@@ -374,11 +410,12 @@ impl PhysicsSystem {
         &mut self,
         e: hecs::Entity,
         t: &Transform,
+        pose: &Pose,
         rb: Option<&RigidBody>,
         collider: Collider,
         desc: ColliderDesc,
     ) {
-        let body = self.world.insert_body(body_desc(rb, t));
+        let body = self.world.insert_body(body_desc(rb, pose));
         let _ = self.world.insert_collider(desc, body);
         if let (Some(rb), Some(b)) = (rb, self.world.body_mut(body)) {
             let mp = *b.mass_properties();
@@ -399,6 +436,8 @@ impl PhysicsSystem {
                 body,
                 built_from: (rb.copied().map(config_only), collider),
                 written: *t,
+                written_pose: *pose,
+                parent_moved: false,
                 written_velocity: rb.map_or((Vec3::ZERO, Vec3::ZERO), |rb| {
                     (rb.linear_velocity, rb.angular_velocity)
                 }),
@@ -441,7 +480,11 @@ impl PhysicsSystem {
         }
     }
 
-    fn write_back(&mut self, world: &mut hecs::World) {
+    /// Body poses and state back into the components: a root's transform gets the body's
+    /// world pose; an entity with a parent gets the local transform that puts it there
+    /// (parents before children, so each sees its parent's new pose).
+    fn write_back(&mut self, world: &mut WorldState) {
+        let mut with_parent = Vec::new();
         for (e, link) in self.links.iter_mut() {
             let Some(body) = self.world.body(link.body) else {
                 continue;
@@ -450,22 +493,85 @@ impl PhysicsSystem {
             if link.settled && at_rest {
                 continue;
             }
-            link.settled = at_rest;
-            let Ok((t, rb)) = world.query_one_mut::<(&mut Transform, Option<&mut RigidBody>)>(e)
-            else {
+            link.settled = at_rest && !link.parent_moved;
+            let pose = Pose {
+                translation: body.translation(),
+                rotation: body.rotation(),
+            };
+            // A static or kinematic body that ended where its entity put it has no new pose
+            // (writing it back through a parent's inverse would only add rounding).
+            let moved_by_physics =
+                body.body_type() == BodyType::Dynamic || pose != link.written_pose;
+            if moved_by_physics && world_pose::parent_in(&world.ecs, e).is_some() {
+                with_parent.push(e);
+                continue;
+            }
+            let local = moved_by_physics.then_some((pose.translation, pose.rotation));
+            Self::write_body(world, e, link, body, local);
+        }
+        if with_parent.is_empty() {
+            return;
+        }
+        with_parent.sort_by_cached_key(|e| world_pose::ancestry(&world.ecs, *e).len());
+        for e in with_parent {
+            let Some(link) = self.links.get_mut(e) else {
                 continue;
             };
-            t.translation = body.translation();
-            t.rotation = body.rotation();
-            link.written = *t;
-            if let Some(rb) = rb {
-                rb.linear_velocity = body.linvel();
-                rb.angular_velocity = body.angvel();
-                rb.sleeping = body.is_sleeping();
-                rb.grounded = body.is_grounded();
-                rb.contact_normal = body.last_contact_normal().unwrap_or(Vec3::ZERO);
-                link.written_velocity = (rb.linear_velocity, rb.angular_velocity);
-            }
+            let Some(body) = self.world.body(link.body) else {
+                continue;
+            };
+            let parent_world = world_pose::parent_world_now(&world.ecs, e);
+            let body_world =
+                Affine3A::from_rotation_translation(body.rotation(), body.translation());
+            let Some(local) = world_pose::local_for(parent_world, body_world) else {
+                continue; // a parent scaled to zero: nothing can put the body there
+            };
+            Self::write_body(
+                world,
+                e,
+                link,
+                body,
+                Some((local.translation, local.rotation)),
+            );
+        }
+    }
+
+    /// Writes one body's result: its local pose (`translation`, `rotation`), when it has a
+    /// new one, into the entity's transform; velocities and contact state into its
+    /// `RigidBody`.
+    fn write_body(
+        world: &mut WorldState,
+        e: hecs::Entity,
+        link: &mut Link,
+        body: &onyx_physics::RigidBody,
+        local: Option<(Vec3, Quat)>,
+    ) {
+        let Ok((t, rb)) = world
+            .ecs
+            .query_one_mut::<(&mut Transform, Option<&mut RigidBody>)>(e)
+        else {
+            return;
+        };
+        if let Some((translation, rotation)) = local {
+            t.translation = translation;
+            t.rotation = rotation;
+        }
+        link.written = *t;
+        link.written_pose = Pose {
+            translation: body.translation(),
+            rotation: body.rotation(),
+        };
+        link.parent_moved = false;
+        if let Some(rb) = rb {
+            rb.linear_velocity = body.linvel();
+            rb.angular_velocity = body.angvel();
+            rb.sleeping = body.is_sleeping();
+            rb.grounded = body.is_grounded();
+            rb.contact_normal = body.last_contact_normal().unwrap_or(Vec3::ZERO);
+            link.written_velocity = (rb.linear_velocity, rb.angular_velocity);
+        }
+        if local.is_some() {
+            world.hierarchy.moved(e);
         }
     }
 }

@@ -1,36 +1,26 @@
 //! [`WorldSnapshot`]: every entity of the world, with its handle and components, to put back.
 
-use onyx_plugin_api::{Camera, Collider, Light, MeshRenderer, Name, RigidBody, Transform};
+use onyx_plugin_api::BuiltinValue;
 
-use crate::render::previous_transform::PreviousTransform;
-use crate::world::PluginComponents;
+use crate::render::PreviousPose;
+use crate::world::{builtin_storage, PluginComponents};
 
 /// One entity's components.
 #[derive(Clone, Debug)]
 struct EntityRecord {
     entity: hecs::Entity,
-    name: Option<Name>,
-    transform: Option<Transform>,
-    previous: Option<PreviousTransform>,
-    mesh_renderer: Option<MeshRenderer>,
-    camera: Option<Camera>,
-    light: Option<Light>,
-    rigid_body: Option<RigidBody>,
-    collider: Option<Collider>,
+    builtins: Vec<BuiltinValue>,
+    previous: Option<PreviousPose>,
     plugin: Option<PluginComponents>,
 }
 
 /// A copy of the world that [`WorldSnapshot::restore`] puts back with the same entity
-/// handles, so references held by plugins and the editor's selection stay valid.
-/// Body velocities live in `RigidBody`, so they come back too; physics rebuilds its bodies
-/// from the components.
+/// handles, so references held by plugins and the editor's selection stay valid (parents
+/// included). Body velocities live in `RigidBody`, so they come back too; physics rebuilds
+/// its bodies from the components, and the scene graph its index.
 #[derive(Clone, Debug, Default)]
 pub struct WorldSnapshot {
     records: Vec<EntityRecord>,
-}
-
-fn copy<T: hecs::Component + Clone>(entity: &hecs::EntityRef<'_>) -> Option<T> {
-    entity.get::<&T>().map(|v| (*v).clone())
 }
 
 impl WorldSnapshot {
@@ -40,15 +30,9 @@ impl WorldSnapshot {
             .iter()
             .map(|e| EntityRecord {
                 entity: e.entity(),
-                name: copy(&e),
-                transform: copy(&e),
-                previous: copy(&e),
-                mesh_renderer: copy(&e),
-                camera: copy(&e),
-                light: copy(&e),
-                rigid_body: copy(&e),
-                collider: copy(&e),
-                plugin: copy(&e),
+                builtins: builtin_storage::all_of(world, e.entity()),
+                previous: e.get::<&PreviousPose>().map(|p| *p),
+                plugin: e.get::<&PluginComponents>().map(|p| (*p).clone()),
             })
             .collect();
         Self { records }
@@ -64,33 +48,16 @@ impl WorldSnapshot {
         self.records.is_empty()
     }
 
-    /// Replaces everything in `world` with the snapshot, entity handles included.
+    /// Replaces everything in `world` with the snapshot, entity handles included. The
+    /// world's scene graph must be told (the caller invalidates it).
     pub fn restore(&self, world: &mut hecs::World) {
         world.clear();
         let mut builder = hecs::EntityBuilder::new();
         for r in &self.records {
-            if let Some(v) = &r.name {
-                builder.add(v.clone());
-            }
-            if let Some(v) = r.transform {
-                builder.add(v);
+            for value in &r.builtins {
+                builtin_storage::add_to(&mut builder, value);
             }
             if let Some(v) = r.previous {
-                builder.add(v);
-            }
-            if let Some(v) = r.mesh_renderer {
-                builder.add(v);
-            }
-            if let Some(v) = r.camera {
-                builder.add(v);
-            }
-            if let Some(v) = r.light {
-                builder.add(v);
-            }
-            if let Some(v) = r.rigid_body {
-                builder.add(v);
-            }
-            if let Some(v) = r.collider {
                 builder.add(v);
             }
             if let Some(v) = &r.plugin {
@@ -104,6 +71,7 @@ impl WorldSnapshot {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use onyx_plugin_api::{Name, Transform};
 
     #[test]
     fn restore_brings_back_every_entity_with_its_handle_and_drops_newer_ones() {

@@ -3,16 +3,15 @@
 use std::collections::HashMap;
 use std::hash::Hasher;
 use std::path::{Path, PathBuf};
-use std::sync::mpsc::{channel, Receiver};
-use std::time::{Duration, Instant};
+use std::time::Instant;
 
-use notify::{RecursiveMode, Watcher};
+use crate::fs::{FileWatcher, QUIET_PERIOD};
 
-/// How long a file must go without change events before it is checked for completeness.
-/// Cargo writes a library in several pieces (and links it into place); loading a
-/// half-written file would fail. An ELF file whose headers say it is whole is taken at once;
-/// other files must also keep the same size over a second quiet period.
-pub const RELOAD_QUIET_PERIOD: Duration = Duration::from_millis(10);
+/// How long a library file must go without change events before it is checked for
+/// completeness. Cargo writes a library in several pieces (and links it into place); loading
+/// a half-written file would fail. An ELF file whose headers say it is whole is taken at
+/// once; other files must also keep the same size over a second quiet period.
+pub const RELOAD_QUIET_PERIOD: std::time::Duration = QUIET_PERIOD;
 
 /// A content hash of a file, to ignore writes that change nothing (a `touch`, a no-op build).
 pub fn content_hash(path: &Path) -> std::io::Result<u64> {
@@ -33,11 +32,8 @@ struct WatchedFile {
 /// reports each file once its new content is complete and differs from what was loaded, with
 /// the hash of that content.
 pub struct LibraryWatcher {
-    watcher: notify::RecommendedWatcher,
-    /// Events, stamped with when they happened (not when they were read).
-    events: Receiver<(Instant, notify::Result<notify::Event>)>,
+    folders: FileWatcher,
     files: HashMap<PathBuf, WatchedFile>,
-    dirs: HashMap<PathBuf, usize>,
 }
 
 impl std::fmt::Debug for LibraryWatcher {
@@ -55,29 +51,20 @@ fn absolute(path: &Path) -> PathBuf {
 impl LibraryWatcher {
     /// A watcher watching nothing yet.
     pub fn new() -> notify::Result<Self> {
-        let (tx, events) = channel();
-        let watcher = notify::recommended_watcher(move |event| {
-            let _ = tx.send((Instant::now(), event));
-        })?;
         Ok(Self {
-            watcher,
-            events,
+            folders: FileWatcher::new()?,
             files: HashMap::new(),
-            dirs: HashMap::new(),
         })
     }
 
     /// Starts watching `path`, whose current content hashes to `hash`.
     pub fn watch(&mut self, path: &Path, hash: u64) -> notify::Result<()> {
         let path = absolute(path);
-        let dir = path.parent().map(Path::to_path_buf).unwrap_or_default();
-        if !self.dirs.contains_key(&dir) {
-            self.watcher.watch(&dir, RecursiveMode::NonRecursive)?;
-        }
         if self.files.contains_key(&path) {
             return Ok(());
         }
-        *self.dirs.entry(dir).or_default() += 1;
+        let dir = path.parent().map(Path::to_path_buf).unwrap_or_default();
+        self.folders.watch_dir(&dir)?;
         self.files.insert(
             path,
             WatchedFile {
@@ -96,31 +83,20 @@ impl LibraryWatcher {
             return;
         }
         let dir = path.parent().map(Path::to_path_buf).unwrap_or_default();
-        if let Some(count) = self.dirs.get_mut(&dir) {
-            *count -= 1;
-            if *count == 0 {
-                self.dirs.remove(&dir);
-                let _ = self.watcher.unwatch(&dir);
-            }
-        }
+        self.folders.unwatch_dir(&dir);
     }
 
     /// Files that changed and are now complete (quiet for [`RELOAD_QUIET_PERIOD`], same size
     /// twice, new content). Call it once per frame.
     pub fn poll(&mut self) -> Vec<(PathBuf, u64)> {
         let now = Instant::now();
-        while let Ok((at, event)) = self.events.try_recv() {
-            let Ok(event) = event else { continue };
-            if matches!(event.kind, notify::EventKind::Access(_)) {
-                continue;
+        let files = &mut self.files;
+        self.folders.drain(|at, path| {
+            if let Some(file) = files.get_mut(path) {
+                file.dirty_since = Some(file.dirty_since.map_or(at, |d| d.max(at)));
+                file.len = None;
             }
-            for path in event.paths {
-                if let Some(file) = self.files.get_mut(&path) {
-                    file.dirty_since = Some(file.dirty_since.map_or(at, |d| d.max(at)));
-                    file.len = None;
-                }
-            }
-        }
+        });
         let mut ready = Vec::new();
         for (path, file) in &mut self.files {
             let Some(since) = file.dirty_since else {

@@ -5,7 +5,7 @@
 //! - `library_completeness.rs`: refuses half-written library files before they are mapped.
 //! - `plugin_load_error.rs`: [`PluginLoadError`], one sentence per failure.
 //! - `plugin_slot.rs`: [`PluginSlot`], a loaded plugin and its fault handling.
-//! - `plugin_status.rs`, `stage.rs`: running/faulted, and which lifecycle method.
+//! - `plugin_status.rs`: running or faulted (in which [`Stage`], `crate::stage`).
 //! - `library_watcher.rs`: [`LibraryWatcher`], notices rebuilt libraries (hot reload).
 //! - `reload_error.rs`: [`ReloadError`], why a new build did not replace the old one.
 
@@ -17,8 +17,8 @@ pub mod plugin_search;
 mod plugin_slot;
 mod plugin_status;
 mod reload_error;
-mod stage;
 
+pub use crate::stage::Stage;
 pub use library_watcher::LibraryWatcher;
 pub use plugin_load_error::PluginLoadError;
 pub use plugin_loader::open_library;
@@ -26,4 +26,3 @@ pub use plugin_search::{PluginSearchPath, PLUGIN_PATH_VAR};
 pub use plugin_slot::{PluginOrigin, PluginSlot};
 pub use plugin_status::PluginStatus;
 pub use reload_error::ReloadError;
-pub use stage::Stage;

@@ -6,7 +6,8 @@ use onyx_plugin_api::host::{CallError, PluginInstance};
 use onyx_plugin_api::{Event, PlatformEvent};
 
 use super::{PluginStatus, Stage};
-use crate::world::{CallContext, HostState};
+use crate::services::CallContext;
+use crate::state::HostState;
 
 /// Where a plugin came from.
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -93,7 +94,8 @@ impl PluginSlot {
             self.name
         );
         state
-            .pending_events
+            .io
+            .events
             .push(Event::Platform(PlatformEvent::PluginFaulted {
                 plugin: self.name.clone(),
                 stage: stage.as_str().to_owned(),

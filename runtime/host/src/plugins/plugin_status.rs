@@ -1,6 +1,6 @@
 //! [`PluginStatus`]: whether the host still calls a plugin.
 
-use super::Stage;
+use crate::stage::Stage;
 
 /// Whether a plugin is running or has faulted.
 #[derive(Clone, Debug, PartialEq, Eq)]

@@ -1,32 +1,31 @@
 //! [`active_camera`]: the camera the world is seen through.
 
 use onyx_plugin_api::glam::Mat4;
-use onyx_plugin_api::{Camera, Entity, Projection, Transform};
+use onyx_plugin_api::{Camera, Entity, GlobalTransform, Projection};
 
-use crate::world::entity_id::to_hecs;
-use crate::world::HostState;
+use super::ViewState;
+use crate::world::WorldState;
 
 /// The camera chosen with `Ctx::set_camera`, else the first active [`Camera`] entity, else
-/// the orbit camera.
-pub fn active_camera(state: &HostState) -> onyx_render::Camera {
-    let world = &state.world;
-    let chosen = state
+/// the orbit camera. A camera looks from its world pose (a camera on a rig moves with it;
+/// scale does not apply).
+pub fn active_camera(world: &WorldState, view: &ViewState) -> onyx_render::Camera {
+    let ecs = &world.ecs;
+    let chosen = view
         .camera_override
-        .and_then(|e: Entity| to_hecs(e))
-        .and_then(|e| {
-            let camera = world.get::<&Camera>(e).ok()?;
-            let t = world.get::<&Transform>(e).ok()?;
-            Some((*camera, *t))
-        })
+        .and_then(|e: Entity| world.entity(e))
+        .and_then(|e| Some((*ecs.get::<&Camera>(e).ok()?, e)))
         .or_else(|| {
-            world
-                .query::<(&Camera, &Transform)>()
+            ecs.query::<(hecs::Entity, &Camera)>()
+                .with::<&onyx_plugin_api::Transform>()
                 .iter()
-                .find(|(c, _)| c.active)
-                .map(|(c, t)| (*c, *t))
-        });
+                .filter(|(_, c)| c.active)
+                .min_by_key(|(e, _)| e.to_bits())
+                .map(|(e, c)| (*c, e))
+        })
+        .filter(|(_, e)| ecs.satisfies::<&onyx_plugin_api::Transform>(*e));
     match chosen {
-        Some((camera, t)) => {
+        Some((camera, e)) => {
             let projection = match camera.projection {
                 Projection::Perspective { fov_y } => onyx_render::Projection::Perspective {
                     fov_y,
@@ -39,11 +38,12 @@ pub fn active_camera(state: &HostState) -> onyx_render::Camera {
                     far: camera.far,
                 },
             };
-            let pose = Mat4::from_rotation_translation(t.rotation, t.translation);
+            let pose = GlobalTransform(world.world_pose(e)).to_transform();
+            let pose = Mat4::from_rotation_translation(pose.rotation, pose.translation);
             onyx_render::Camera::from_world_transform(pose, projection)
         }
         None => {
-            let orbit = &state.orbit;
+            let orbit = &view.orbit;
             onyx_render::Camera::perspective_look_at(
                 orbit.eye(),
                 orbit.target,

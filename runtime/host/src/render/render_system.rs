@@ -2,7 +2,7 @@
 
 use std::collections::HashMap;
 
-use onyx_plugin_api::glam::Vec3;
+use onyx_plugin_api::glam::{Affine3A, Mat4, Vec3};
 use onyx_plugin_api::{
     Event, GraphicsEvent, Light, MeshId, MeshRenderer, ShadingMode, TextureId, Transform,
 };
@@ -13,9 +13,28 @@ use onyx_render::{
     TextureHandle,
 };
 
-use super::previous_transform::{interpolate, PreviousTransform};
-use super::ShaderWatcher;
-use crate::world::HostState;
+use super::previous_pose::{interpolate, PreviousPose};
+use super::{ShaderWatcher, ViewState};
+use crate::assets::AssetRegistry;
+use crate::physics::PhysicsSystem;
+use crate::world::WorldState;
+
+/// What a frame is drawn from: the world (poses from its scene graph), how it is looked at,
+/// this frame's debug lines, physics (for its debug lines) and the interpolation factor
+/// between the last two fixed steps.
+#[derive(Clone, Copy)]
+pub struct RenderInput<'a> {
+    /// Entities, scene graph, assets.
+    pub world: &'a WorldState,
+    /// Camera choice and view switches.
+    pub view: &'a ViewState,
+    /// Lines plugins drew this frame.
+    pub debug_lines: &'a [onyx_plugin_api::DebugLine],
+    /// Physics, whose collider outlines and contacts are drawn when asked.
+    pub physics: &'a PhysicsSystem,
+    /// Blend between the previous and the current fixed step, `[0, 1]`.
+    pub alpha: f32,
+}
 
 /// A renderer plus what the host keeps to feed it: the GPU copies of the registered models
 /// and textures, and buffers reused every frame (no per-object allocation per frame).
@@ -23,7 +42,7 @@ pub struct RenderSystem {
     renderer: Renderer,
     models: HashMap<MeshId, Model>,
     textures: HashMap<TextureId, TextureHandle>,
-    rows: Vec<(Transform, MeshRenderer)>,
+    rows: Vec<(Affine3A, MeshRenderer)>,
     objects: Vec<DrawObject>,
     lines: Vec<DebugLine>,
     shader_watcher: Option<ShaderWatcher>,
@@ -32,7 +51,7 @@ pub struct RenderSystem {
     /// Whether physics debug lines (collider outlines, contacts, normals) are drawn.
     pub physics_debug: bool,
     /// The GPU side of plugin GUIs drawn with this renderer.
-    pub(crate) gui: crate::gui::GuiGpu,
+    pub(crate) gui: super::GuiGpu,
 }
 
 impl std::fmt::Debug for RenderSystem {
@@ -40,6 +59,36 @@ impl std::fmt::Debug for RenderSystem {
         f.debug_struct("RenderSystem")
             .field("adapter", &self.renderer.gpu().adapter_info().name)
             .finish()
+    }
+}
+
+/// Calls `f` with every visible [`MeshRenderer`] and the world pose it is drawn at: its
+/// entity's world pose interpolated by `alpha` from the previous fixed step's (the scene
+/// graph's world poses must be up to date).
+pub fn drawn_poses(
+    world: &WorldState,
+    alpha: f32,
+    mut f: impl FnMut(hecs::Entity, Affine3A, &MeshRenderer),
+) {
+    let hierarchy = &world.hierarchy;
+    for (e, t, renderer, previous) in world
+        .ecs
+        .query::<(
+            hecs::Entity,
+            &Transform,
+            &MeshRenderer,
+            Option<&PreviousPose>,
+        )>()
+        .iter()
+    {
+        if renderer.visible {
+            let pose = hierarchy.world_of(e, t);
+            f(
+                e,
+                previous.map_or(pose, |p| interpolate(&p.0, &pose, alpha)),
+                renderer,
+            );
+        }
     }
 }
 
@@ -66,7 +115,7 @@ impl RenderSystem {
             shader_watcher: None,
             grid: true,
             physics_debug: false,
-            gui: crate::gui::GuiGpu::default(),
+            gui: super::GuiGpu::default(),
         }
     }
 
@@ -81,7 +130,7 @@ impl RenderSystem {
         Ok(())
     }
 
-    fn poll_shaders(&mut self, state: &mut HostState) {
+    fn poll_shaders(&mut self, events: &mut Vec<Event>) {
         let Some(watcher) = &mut self.shader_watcher else {
             return;
         };
@@ -92,11 +141,9 @@ impl RenderSystem {
             Ok(()) => tracing::info!("shaders reloaded"),
             Err(error) => {
                 tracing::error!("{error}");
-                state
-                    .pending_events
-                    .push(Event::Graphics(GraphicsEvent::Gpu {
-                        message: error.to_string(),
-                    }));
+                events.push(Event::Graphics(GraphicsEvent::Gpu {
+                    message: error.to_string(),
+                }));
             }
         }
     }
@@ -105,7 +152,7 @@ impl RenderSystem {
     /// same pixels), shaders from the source checkout's `shaders/` folder when there is one.
     pub fn offscreen_settings() -> RenderSettings {
         RenderSettings {
-            shader_dir: crate::window::shader_dir(),
+            shader_dir: super::shader_dir(),
             ..RenderSettings::deterministic()
         }
     }
@@ -126,7 +173,12 @@ impl RenderSystem {
     }
 
     /// Makes sure the model of `id` is on the GPU; `false` for an unknown id.
-    fn ensure_model(&mut self, id: MeshId, state: &mut HostState) -> bool {
+    fn ensure_model(
+        &mut self,
+        id: MeshId,
+        assets: &AssetRegistry,
+        events: &mut Vec<Event>,
+    ) -> bool {
         if !self.models.contains_key(&id) {
             let builtin = self.renderer.builtin_meshes();
             let mesh = match id {
@@ -137,7 +189,7 @@ impl RenderSystem {
                 MeshId::CYLINDER => Some(builtin.cylinder),
                 _ => None,
             };
-            let model = match (mesh, state.assets.mesh_path(id)) {
+            let model = match (mesh, assets.mesh_path(id)) {
                 (Some(mesh), _) => Model {
                     parts: vec![ModelPart {
                         name: "builtin".into(),
@@ -146,15 +198,13 @@ impl RenderSystem {
                     }],
                 },
                 (None, Some(path)) => {
-                    let path = state.assets.resolve(path);
+                    let path = assets.resolve(path);
                     let (model, problems) = self.renderer.load_model_or_fallback(&path);
                     for problem in problems {
-                        state
-                            .pending_events
-                            .push(Event::Graphics(GraphicsEvent::AssetFailed {
-                                path: path.display().to_string(),
-                                message: problem.to_string(),
-                            }));
+                        events.push(Event::Graphics(GraphicsEvent::AssetFailed {
+                            path: path.display().to_string(),
+                            message: problem.to_string(),
+                        }));
                     }
                     model
                 }
@@ -165,66 +215,72 @@ impl RenderSystem {
         true
     }
 
-    fn texture(&mut self, id: TextureId, state: &mut HostState) -> Option<TextureHandle> {
+    fn texture(
+        &mut self,
+        id: TextureId,
+        assets: &AssetRegistry,
+        events: &mut Vec<Event>,
+    ) -> Option<TextureHandle> {
         if id == TextureId::NONE {
             return None;
         }
         if let Some(handle) = self.textures.get(&id) {
             return Some(*handle);
         }
-        let path = state.assets.resolve(state.assets.texture_path(id)?);
+        let path = assets.resolve(assets.texture_path(id)?);
         let (handle, problem) = self.renderer.load_texture_or_fallback(&path);
         if let Some(problem) = problem {
-            state
-                .pending_events
-                .push(Event::Graphics(GraphicsEvent::AssetFailed {
-                    path: path.display().to_string(),
-                    message: problem.to_string(),
-                }));
+            events.push(Event::Graphics(GraphicsEvent::AssetFailed {
+                path: path.display().to_string(),
+                message: problem.to_string(),
+            }));
         }
         self.textures.insert(id, handle);
         Some(handle)
     }
 
-    /// Draws the world into `target`: every visible [`MeshRenderer`] at its pose interpolated
-    /// between the last two fixed steps, through the chosen camera (else the orbit camera),
-    /// with the scene's lights (else a default sun), the grid and this frame's debug lines.
-    /// GPU errors become graphics events.
+    /// Draws the world into `target`: every visible [`MeshRenderer`] at its world pose
+    /// interpolated between the last two fixed steps, through the chosen camera (else the
+    /// orbit camera), with the scene's lights (else a default sun), the grid and this
+    /// frame's debug lines. GPU errors and assets that fail to load become `events`.
     pub fn draw(
         &mut self,
-        state: &mut HostState,
+        input: RenderInput<'_>,
+        events: &mut Vec<Event>,
         target: &mut impl RenderTarget,
     ) -> Result<RenderStats, RenderError> {
-        self.draw_with_overlay(state, target, |_| {})
+        self.draw_with_overlay(input, events, target, |_| {})
     }
 
     /// Like [`RenderSystem::draw`], then `overlay` draws over the finished scene (the GUI).
     pub fn draw_with_overlay(
         &mut self,
-        state: &mut HostState,
+        input: RenderInput<'_>,
+        events: &mut Vec<Event>,
         target: &mut impl RenderTarget,
         overlay: impl FnOnce(&mut onyx_render::Overlay<'_>),
     ) -> Result<RenderStats, RenderError> {
-        self.poll_shaders(state);
-        let alpha = state.clock.time().alpha;
-        let camera = self.camera(state);
-        let lights = Self::lights(state);
-
+        self.poll_shaders(events);
+        let RenderInput {
+            world,
+            view,
+            debug_lines,
+            physics,
+            alpha,
+        } = input;
+        let camera = super::active_camera(world, view);
+        let lights = Self::lights(world);
         let mut rows = std::mem::take(&mut self.rows);
         rows.clear();
-        rows.extend(
-            state
-                .world
-                .query::<(&Transform, &MeshRenderer, Option<&PreviousTransform>)>()
-                .iter()
-                .filter(|(_, r, _)| r.visible)
-                .map(|(t, r, p)| (p.map_or(*t, |p| interpolate(&p.0, t, alpha)), *r)),
-        );
+        drawn_poses(world, alpha, |_, pose, renderer| {
+            rows.push((pose, *renderer))
+        });
         self.objects.clear();
-        for &(transform, renderer) in &rows {
-            let matrix = transform.matrix();
-            let texture = self.texture(renderer.material.texture, state);
-            if !self.ensure_model(renderer.mesh, state) {
+        let shading_override = view.overrides.shading.into_option();
+        for &(pose, renderer) in &rows {
+            let matrix = Mat4::from(pose);
+            let texture = self.texture(renderer.material.texture, &world.assets, events);
+            if !self.ensure_model(renderer.mesh, &world.assets, events) {
                 continue;
             }
             let model = &self.models[&renderer.mesh];
@@ -235,12 +291,7 @@ impl RenderSystem {
                     color: [r * pc[0], g * pc[1], b * pc[2], a * pc[3]],
                     texture: texture.or(part.material.texture),
                     shading: to_render_shading(
-                        state
-                            .tools
-                            .render_overrides
-                            .shading
-                            .into_option()
-                            .unwrap_or(renderer.material.shading),
+                        shading_override.unwrap_or(renderer.material.shading),
                     ),
                 };
                 if material.shading != onyx_render::ShadingMode::Lit {
@@ -253,18 +304,18 @@ impl RenderSystem {
         self.rows = rows;
         self.lines.clear();
         self.lines.extend(
-            state.debug_lines.iter().map(|l| {
+            debug_lines.iter().map(|l| {
                 DebugLine::new(l.start, l.end, l.color).with_category(DebugCategories::USER)
             }),
         );
-        let overrides = state.tools.render_overrides;
+        let overrides = view.overrides;
         if overrides
             .physics_debug
             .into_option()
             .unwrap_or(self.physics_debug)
         {
             self.lines
-                .extend(state.physics.debug_lines().into_iter().map(|l| {
+                .extend(physics.debug_lines().into_iter().map(|l| {
                     DebugLine::new(l.start, l.end, l.color).with_category(DebugCategories::PHYSICS)
                 }));
         }
@@ -273,12 +324,12 @@ impl RenderSystem {
             .with_grid(overrides.grid.into_option().unwrap_or(self.grid))
             .with_debug_lines(&self.lines);
         let result = self.renderer.render_with_overlay(target, &scene, overlay);
-        self.forward_events(state);
+        self.forward_events(events);
         result
     }
 
     /// Moves the renderer's GPU events into the host's dispatcher.
-    pub fn forward_events(&mut self, state: &mut HostState) {
+    pub fn forward_events(&mut self, events: &mut Vec<Event>) {
         for event in self.renderer.drain_events() {
             let message = event.to_string();
             let event = match event {
@@ -287,23 +338,26 @@ impl RenderSystem {
                 }
                 _ => GraphicsEvent::Gpu { message },
             };
-            state.pending_events.push(Event::Graphics(event));
+            events.push(Event::Graphics(event));
         }
     }
 
-    fn camera(&self, state: &HostState) -> onyx_render::Camera {
-        super::active_camera(state)
-    }
-
-    fn lights(state: &HostState) -> Lights {
+    /// The scene's lights at their world poses (directional lights shine along their local
+    /// -Z, point lights sit at their origin).
+    fn lights(world: &WorldState) -> Lights {
         let mut lights = Lights {
             ambient: Vec3::ZERO,
             sun: None,
             points: Vec::new(),
         };
         let mut any = false;
-        for (light, t) in state.world.query::<(&Light, &Transform)>().iter() {
+        for (e, light, t) in world
+            .ecs
+            .query::<(hecs::Entity, &Light, &Transform)>()
+            .iter()
+        {
             any = true;
+            let pose = world.hierarchy.world_of(e, t);
             match *light {
                 Light::Ambient { color, intensity } => {
                     lights.ambient += Vec3::from(color) * intensity;
@@ -311,7 +365,9 @@ impl RenderSystem {
                 Light::Directional { color, intensity } => {
                     if lights.sun.is_none() {
                         lights.sun = Some(DirectionalLight {
-                            direction: t.rotation * Vec3::NEG_Z,
+                            direction: pose
+                                .transform_vector3(Vec3::NEG_Z)
+                                .normalize_or(Vec3::NEG_Z),
                             color: Vec3::from(color),
                             intensity,
                         });
@@ -322,7 +378,7 @@ impl RenderSystem {
                     intensity,
                     range,
                 } => lights.points.push(
-                    PointLight::new(t.translation)
+                    PointLight::new(pose.translation.into())
                         .with_color(Vec3::from(color))
                         .with_intensity(intensity)
                         .with_range(range),

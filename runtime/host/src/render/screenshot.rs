@@ -1,11 +1,8 @@
-//! Rendering the world offscreen into an image, and saving it as a PNG.
+//! Screenshots: why one was not taken, and saving one as a PNG.
 
 use std::path::{Path, PathBuf};
 
-use onyx_render::{OffscreenTarget, ReadbackError, RenderError, RendererInitError};
-
-use super::RenderSystem;
-use crate::world::HostState;
+use onyx_render::{ReadbackError, RenderError, RendererInitError};
 
 /// Why a screenshot was not taken.
 #[derive(Debug, thiserror::Error)]
@@ -29,18 +26,6 @@ pub enum ScreenshotError {
     },
 }
 
-/// Draws the world into a `width` × `height` offscreen image.
-pub fn render_image(
-    system: &mut RenderSystem,
-    state: &mut HostState,
-    width: u32,
-    height: u32,
-) -> Result<onyx_render::image::RgbaImage, ScreenshotError> {
-    let mut target = OffscreenTarget::new(system.renderer().gpu(), width.max(1), height.max(1));
-    system.draw(state, &mut target)?;
-    Ok(target.read_image(system.renderer().gpu())?)
-}
-
 /// Saves `image` as a PNG at `path`, atomically.
 pub fn save_png(image: &onyx_render::image::RgbaImage, path: &Path) -> Result<(), ScreenshotError> {
     let save_error = |message: String| ScreenshotError::Save {
@@ -51,5 +36,5 @@ pub fn save_png(image: &onyx_render::image::RgbaImage, path: &Path) -> Result<()
     image
         .write_to(&mut bytes, onyx_render::image::ImageFormat::Png)
         .map_err(|e| save_error(e.to_string()))?;
-    crate::scene::write_atomically(path, bytes.get_ref()).map_err(|e| save_error(e.to_string()))
+    crate::fs::write_atomically(path, bytes.get_ref()).map_err(|e| save_error(e.to_string()))
 }

@@ -1,22 +1,22 @@
 //! Scene files: RON, versioned, loaded with line/column errors, saved atomically.
 //!
-//! - `scene_file.rs`: [`SceneFile`], the format.
-//! - `scene_physics.rs`: [`ScenePhysics`], the physics preset and overrides a scene asks for.
-//! - `scene_io.rs`: parse, spawn into a world, capture from a world, atomic write.
+//! - `scene_file.rs`: [`SceneFile`] and [`SceneEntity`], the format (each built-in
+//!   component under its key, in its file form; parents by file-local id).
+//! - `scene_read.rs`: parse and check (version, physics, scene graph).
+//! - `scene_spawn.rs`: spawn into a world, every value checked first.
+//! - `scene_save.rs`: capture a world, atomic write.
 //! - `scene_error.rs`: [`SceneError`].
 
 mod scene_error;
 mod scene_file;
-mod scene_io;
-mod scene_physics;
+mod scene_read;
+mod scene_save;
+mod scene_spawn;
 
 pub use scene_error::SceneError;
 pub use scene_file::{
-    SceneCollider, SceneComponent, SceneEntity, SceneFile, SceneMeshRenderer, SceneShape,
-    SCENE_FORMAT_VERSION,
+    SceneComponent, SceneEntity, SceneFile, OLDEST_SCENE_FORMAT_VERSION, SCENE_FORMAT_VERSION,
 };
-pub use scene_io::{
-    parse_scene, read_scene, scene_collider, scene_from_world, scene_mesh_renderer, spawn_scene,
-    write_atomically, write_scene,
-};
-pub use scene_physics::{ScenePhysics, MAX_SCENE_FIXED_HZ, MAX_SCENE_SUBSTEPS};
+pub use scene_read::{parse_scene, read_scene};
+pub use scene_save::{scene_from_world, write_scene};
+pub use scene_spawn::spawn_scene;

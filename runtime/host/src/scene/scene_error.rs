@@ -1,6 +1,6 @@
 //! [`SceneError`]: why a scene could not be loaded or saved.
 
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 
 /// A scene that could not be read or written. Loading never changes the world on error;
 /// saving never damages the previous file.
@@ -32,7 +32,7 @@ pub enum SceneError {
     },
     /// The file is of a format version this host does not read.
     #[error(
-        "scene `{}` has format version {found}, this host reads version {supported}",
+        "scene `{}` has format version {found}, this host reads versions {oldest} to {newest}",
         .path.display()
     )]
     UnsupportedVersion {
@@ -40,16 +40,21 @@ pub enum SceneError {
         path: PathBuf,
         /// Its version.
         found: u32,
-        /// The version this host reads.
-        supported: u32,
+        /// The oldest version this host reads.
+        oldest: u32,
+        /// The version this host writes.
+        newest: u32,
     },
-    /// A value in the file is not acceptable.
-    #[error("scene `{}`, entity #{index}: {message}", .path.display())]
+    /// An entity of the file cannot be spawned: a bad value, or a parent that is not there or
+    /// makes a cycle.
+    #[error("scene `{}`, entity #{index}{}: {message}", .path.display(), named(.name))]
     InvalidEntity {
         /// The file.
         path: PathBuf,
         /// 0-based index of the entity in the file.
         index: usize,
+        /// Its `name`, if it has one.
+        name: Option<String>,
         /// What is wrong.
         message: String,
     },
@@ -67,4 +72,25 @@ pub enum SceneError {
         /// The serializer's message.
         message: String,
     },
+}
+
+fn named(name: &Option<String>) -> String {
+    match name {
+        Some(name) => format!(" ({name:?})"),
+        None => String::new(),
+    }
+}
+
+impl SceneError {
+    /// The file the error is about, if any.
+    pub fn path(&self) -> Option<&Path> {
+        match self {
+            SceneError::Io { path, .. }
+            | SceneError::Parse { path, .. }
+            | SceneError::UnsupportedVersion { path, .. }
+            | SceneError::InvalidEntity { path, .. }
+            | SceneError::InvalidPhysics { path, .. } => Some(path),
+            SceneError::Serialize { .. } => None,
+        }
+    }
 }

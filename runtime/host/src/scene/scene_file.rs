@@ -2,29 +2,42 @@
 
 use std::collections::BTreeMap;
 
-use onyx_plugin_api::{Camera, Light, RigidBody, ShadingMode, Transform};
+use onyx_plugin_api::{Builtin, BuiltinId, BuiltinValue, FileRefs, HostRefs, InvalidValue, Listed};
 use serde::{Deserialize, Serialize};
 
-use super::ScenePhysics;
+use crate::physics::ScenePhysics;
 
-/// The scene format this host writes and reads.
-pub const SCENE_FORMAT_VERSION: u32 = 1;
+/// The scene format this host writes. Version 2 added entity ids and parents.
+pub const SCENE_FORMAT_VERSION: u32 = 2;
+/// The oldest scene format this host still reads.
+pub const OLDEST_SCENE_FORMAT_VERSION: u32 = 1;
 
-/// A scene file: a format version and the entities.
+/// A scene file: a format version, optional physics settings, and the entities.
 ///
 /// ```ron
 /// (
-///     version: 1,
+///     version: 2,
 ///     physics: Some((preset: Balanced)),
 ///     entities: [
 ///         (
-///             name: Some("crate"),
-///             transform: Some((translation: (0.0, 2.0, 0.0), rotation: (0.0, 0.0, 0.0, 1.0), scale: (1.0, 1.0, 1.0))),
+///             id: Some(1),
+///             name: Some("cart"),
+///             transform: Some((translation: (0.0, 0.5, 0.0), rotation: (0.0, 0.0, 0.0, 1.0), scale: (1.0, 1.0, 1.0))),
 ///             components: { "spinner.spin": Json({"speed": 1.5}), "notes.raw": Raw("AAEC") },
+///         ),
+///         (
+///             name: Some("lamp"),
+///             parent: Some(1),
+///             transform: Some((translation: (0.0, 1.0, 0.0))),
+///             light: Some(Point(color: (1.0, 0.9, 0.8), intensity: 2.0, range: 6.0)),
 ///         ),
 ///     ],
 /// )
 /// ```
+///
+/// Each built-in component has its key (`name`, `transform`, `parent`, `mesh_renderer`, …:
+/// see [`BuiltinId::scene_key`]); absent ones are simply not there. An entity's `parent`
+/// names another entity's `id`, which is local to the file.
 #[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct SceneFile {
@@ -38,130 +51,57 @@ pub struct SceneFile {
     pub entities: Vec<SceneEntity>,
 }
 
-/// One entity and its components. Absent components are simply not there.
-#[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub struct SceneEntity {
-    /// The entity's name.
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub name: Option<String>,
-    /// Its transform.
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub transform: Option<Transform>,
-    /// What it looks like.
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub mesh_renderer: Option<SceneMeshRenderer>,
-    /// A camera at the entity's transform.
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub camera: Option<Camera>,
-    /// A light at the entity's transform.
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub light: Option<Light>,
-    /// A rigid body (needs a collider to collide).
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub rigid_body: Option<RigidBody>,
-    /// A collision shape (without a rigid body, a static one).
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub collider: Option<SceneCollider>,
-    /// Plugin components by name.
-    #[serde(default, skip_serializing_if = "BTreeMap::is_empty")]
-    pub components: BTreeMap<String, SceneComponent>,
+macro_rules! scene_entity {
+    ($($id:ident => $key:ident: $ty:ty as $ffi:ty),* $(,)?) => {
+        /// One entity: its file-local id, each built-in component under its key in its
+        /// file form, and plugin components by name.
+        #[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
+        #[serde(deny_unknown_fields)]
+        pub struct SceneEntity {
+            /// The id other entities of this file name it by in their `parent` (unique in
+            /// the file).
+            #[serde(default, skip_serializing_if = "Option::is_none")]
+            pub id: Option<u64>,
+            $(
+                #[doc = concat!("Its [`", stringify!($id), "`](onyx_plugin_api::", stringify!($id), "), in file form.")]
+                #[serde(default, skip_serializing_if = "Option::is_none")]
+                pub $key: Option<<$ty as Builtin>::File>,
+            )*
+            /// Plugin components by name.
+            #[serde(default, skip_serializing_if = "BTreeMap::is_empty")]
+            pub components: BTreeMap<String, SceneComponent>,
+        }
+
+        impl SceneEntity {
+            /// Its built-in components read from their file forms, in list order (the assets
+            /// they name registered), or the first that is refused.
+            pub fn builtins(
+                &self,
+                refs: &mut dyn FileRefs,
+            ) -> Result<Vec<BuiltinValue>, (BuiltinId, InvalidValue)> {
+                let mut values = Vec::new();
+                $(
+                    if let Some(file) = &self.$key {
+                        let value = <$ty as Builtin>::from_file(file.clone(), refs)
+                            .map_err(|e| (<$ty as Listed>::ID, e))?;
+                        values.push(value.into());
+                    }
+                )*
+                Ok(values)
+            }
+
+            /// Writes `value` under its key, in its file form.
+            pub fn set_builtin(&mut self, value: &BuiltinValue, refs: &dyn HostRefs) {
+                match value {
+                    $(BuiltinValue::$id(v) => self.$key = Some(v.to_file(refs)),)*
+                    _ => {}
+                }
+            }
+        }
+    };
 }
 
-/// A [`MeshRenderer`](onyx_plugin_api::MeshRenderer) as a scene file writes it: meshes and
-/// textures by file path (ids are only valid while a host runs).
-#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub struct SceneMeshRenderer {
-    /// A built-in shape (`cube`, `sphere`, `plane`, `capsule`, `cylinder`) or a model file.
-    pub mesh: String,
-    /// Linear RGBA colour.
-    #[serde(default = "white")]
-    pub color: [f32; 4],
-    /// An albedo texture file.
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub texture: Option<String>,
-    /// How it is shaded.
-    #[serde(default)]
-    pub shading: ShadingMode,
-    /// Whether it is drawn.
-    #[serde(default = "yes")]
-    pub visible: bool,
-}
-
-fn white() -> [f32; 4] {
-    [1.0; 4]
-}
-
-fn yes() -> bool {
-    true
-}
-
-/// A [`Collider`](onyx_plugin_api::Collider) as a scene file writes it: mesh shapes by model
-/// file path.
-#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub struct SceneCollider {
-    /// The shape.
-    pub shape: SceneShape,
-    /// Offset from the entity's origin, local frame, metres.
-    #[serde(default)]
-    pub offset: [f32; 3],
-    /// kg/m³.
-    #[serde(default = "water")]
-    pub density: f32,
-    /// Bounciness 0..1.
-    #[serde(default)]
-    pub restitution: f32,
-    /// Sliding friction.
-    #[serde(default = "half")]
-    pub friction: f32,
-    /// Friction at rest (defaults to `friction`).
-    #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub static_friction: Option<f32>,
-}
-
-fn water() -> f32 {
-    1000.0
-}
-
-fn half() -> f32 {
-    0.5
-}
-
-/// A collision shape in a scene file.
-#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
-pub enum SceneShape {
-    /// Sphere of `radius` m.
-    Sphere {
-        /// Radius.
-        radius: f32,
-    },
-    /// Box with half extents.
-    Box {
-        /// Half extents.
-        half_extents: [f32; 3],
-    },
-    /// Capsule along Y.
-    Capsule {
-        /// Half length of the straight part.
-        half_height: f32,
-        /// Radius.
-        radius: f32,
-    },
-    /// Half space below the local XZ plane.
-    Plane,
-    /// Convex hull of a model file's vertices.
-    ConvexHull {
-        /// Model file.
-        mesh: String,
-    },
-    /// Triangles of a model file (static).
-    TriMesh {
-        /// Model file.
-        mesh: String,
-    },
-}
+onyx_plugin_api::for_each_builtin!(scene_entity);
 
 /// A plugin component in a scene file.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]

@@ -1,24 +1,24 @@
-//! [`ScriptRunner`] and [`run_scripts`]: calling each entity's script while playing.
+//! [`ScriptRunner`]: which entities run which script (the host's frame calls them:
+//! `host_scripts.rs`).
 
 use std::collections::HashMap;
 
-use onyx_plugin_api::{Component, PlayMode, Script, ScriptCall, ScriptPhase};
+use onyx_plugin_api::{Component, Script};
 
-use crate::plugins::{PluginSlot, Stage};
-use crate::world::entity_id::to_api;
-use crate::world::{HostState, PluginComponents};
+use crate::entity_id::to_api;
+use crate::world::PluginComponents;
 
 /// The scripts alive per entity (seen `Created`, not yet `Destroyed`).
 #[derive(Debug, Default)]
 pub struct ScriptRunner {
-    live: HashMap<hecs::Entity, Script>,
+    pub(crate) live: HashMap<hecs::Entity, Script>,
     /// The world generation the live set belongs to (a new scene starts a new one).
-    generation: u64,
+    pub(crate) generation: u64,
 }
 
 /// Every entity's [`Script`], decoded; entities whose component does not decode are logged
 /// once per frame and skipped.
-fn scripted_entities(world: &hecs::World) -> Vec<(hecs::Entity, Script)> {
+pub fn scripted_entities(world: &hecs::World) -> Vec<(hecs::Entity, Script)> {
     let mut rows: Vec<(hecs::Entity, Script)> = world
         .query::<(hecs::Entity, &PluginComponents)>()
         .iter()
@@ -35,87 +35,4 @@ fn scripted_entities(world: &hecs::World) -> Vec<(hecs::Entity, Script)> {
         .collect();
     rows.sort_by_key(|(e, _)| e.to_bits());
     rows
-}
-
-fn call(
-    plugins: &mut [PluginSlot],
-    state: &mut HostState,
-    entity: hecs::Entity,
-    script: &Script,
-    phase: ScriptPhase,
-    dt: f32,
-) {
-    let Some(owner) = state
-        .tools
-        .scripts
-        .get(&script.name)
-        .map(|s| s.plugin.clone())
-    else {
-        return;
-    };
-    let Some(slot) = plugins.iter_mut().find(|p| p.name() == owner) else {
-        return;
-    };
-    let call = ScriptCall {
-        entity: to_api(entity),
-        phase,
-        name: script.name.clone(),
-        params: script.params.clone(),
-        dt,
-    };
-    slot.call(state, Stage::Script, |p, cx| p.on_script(cx, &call));
-}
-
-/// Runs one frame of scripts, after `on_update`: while playing, `Created` for scripts that
-/// appeared and `Update` for all; `Destroyed` for scripts whose entity or component went
-/// away, whose world was replaced, or — on leaving play for Edit — all of them.
-pub fn run_scripts(plugins: &mut [PluginSlot], state: &mut HostState, dt: f32) {
-    let mut runner = std::mem::take(&mut state.tools.script_runner);
-    let mode = state.tools.play.mode();
-    let generation_changed = runner.generation != state.tools.world_generation;
-    if generation_changed || mode == PlayMode::Edit {
-        let mut gone: Vec<(hecs::Entity, Script)> = runner.live.drain().collect();
-        gone.sort_by_key(|(e, _)| e.to_bits());
-        for (e, script) in gone {
-            call(plugins, state, e, &script, ScriptPhase::Destroyed, 0.0);
-        }
-        runner.generation = state.tools.world_generation;
-    }
-    if mode != PlayMode::Playing {
-        state.tools.script_runner = runner;
-        return;
-    }
-    let current = scripted_entities(&state.world);
-    let mut ended: Vec<(hecs::Entity, Script)> = runner
-        .live
-        .iter()
-        .filter(|(e, script)| {
-            !current
-                .iter()
-                .any(|(c, s)| c == *e && s.name == script.name)
-        })
-        .map(|(e, s)| (*e, s.clone()))
-        .collect();
-    ended.sort_by_key(|(e, _)| e.to_bits());
-    for (e, script) in ended {
-        runner.live.remove(&e);
-        call(plugins, state, e, &script, ScriptPhase::Destroyed, 0.0);
-    }
-    for (e, script) in current {
-        if state.tools.scripts.get(&script.name).is_none() {
-            continue;
-        }
-        if let std::collections::hash_map::Entry::Vacant(slot) = runner.live.entry(e) {
-            slot.insert(script.clone());
-            call(plugins, state, e, &script, ScriptPhase::Created, 0.0);
-        }
-        // The script may have despawned its entity or removed itself in `Created`.
-        if state.world.contains(e) {
-            if let Some(live) = runner.live.get_mut(&e) {
-                live.params = script.params.clone();
-            }
-            call(plugins, state, e, &script, ScriptPhase::Update, dt);
-        }
-    }
-    state.tools.script_runner = runner;
 }

@@ -12,4 +12,4 @@ pub mod winit_input;
 
 pub use window_error::WindowError;
 pub use window_gui::WindowGui;
-pub use windowed_runner::{run_windowed, shader_dir, WindowOptions, WindowedSummary};
+pub use windowed_runner::{run_windowed, WindowOptions, WindowedSummary};

@@ -71,7 +71,7 @@ fn window_graphics(window: Arc<Window>, vsync: bool) -> Result<WindowGraphics, S
         .map_err(|e| format!("no surface for the window: {e}"))?;
     let gpu = GpuContext::from_instance(instance, Some(&surface)).map_err(|e| e.to_string())?;
     let settings = RenderSettings {
-        shader_dir: shader_dir(),
+        shader_dir: crate::render::shader_dir(),
         ..RenderSettings::default()
     };
     let renderer = Renderer::new(gpu, settings).map_err(|e| e.to_string())?;
@@ -82,16 +82,6 @@ fn window_graphics(window: Arc<Window>, vsync: bool) -> Result<WindowGraphics, S
         tracing::warn!("shader changes will not be picked up: {error}");
     }
     Ok(WindowGraphics { system, target })
-}
-
-/// The `shaders/` folder of a source checkout, when the binary runs from one (so shaders can
-/// be edited and reloaded); otherwise the copies embedded in the binary are used.
-pub fn shader_dir() -> Option<std::path::PathBuf> {
-    if let Some(dir) = std::env::var_os("ONYX_SHADER_DIR") {
-        return Some(dir.into());
-    }
-    let dev = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../../shaders");
-    (cfg!(debug_assertions) && dev.is_dir()).then_some(dev)
 }
 
 struct App<'h> {

@@ -1,19 +1,16 @@
-//! The world plugins see: hecs plus the host's own component types.
+//! The world plugins see: hecs entities with the built-in components and plugin data, the
+//! scene graph over them, and the assets they name.
 //!
+//! - `world_state.rs`: [`WorldState`], the world and the writes that keep its scene graph in
+//!   step; `world_refs.rs`: [`WorldRefs`], lookups for component checks and file forms.
+//! - `builtin_storage.rs`: built-in components in hecs by id or value, through the one list.
 //! - `plugin_components.rs`: [`PluginComponents`], named plugin data per entity.
-//! - `entity_id.rs`: API ↔ hecs entity handles.
-//! - `call_context.rs`: [`CallContext`], the `HostServices` a plugin call is served by;
-//!   `call_context_tools.rs`: its tool services; `component_json.rs`: components by type
-//!   name as JSON (the inspector's read and write).
-//! - `tool_state.rs`: [`ToolState`], what the tool services keep between calls.
 
-mod call_context;
-mod call_context_tools;
-mod component_json;
-pub mod entity_id;
+pub mod builtin_storage;
 mod plugin_components;
-mod tool_state;
+mod world_refs;
+mod world_state;
 
-pub use call_context::{CallContext, HostState};
 pub use plugin_components::{PluginComponents, StoredBlob};
-pub use tool_state::ToolState;
+pub use world_refs::WorldRefs;
+pub use world_state::{WorldState, ZeroScaleParent};

@@ -9,9 +9,9 @@ use std::process::ExitCode;
 use anyhow::Context as _;
 use clap::Parser;
 use onyx_runtime::clock::ClockSettings;
+use onyx_runtime::fs::write_atomically;
 use onyx_runtime::plugins::{plugin_search, PluginSearchPath};
 use onyx_runtime::render::{save_png, RenderSystem};
-use onyx_runtime::scene::write_atomically;
 use onyx_runtime::window::{run_windowed, WindowOptions};
 use onyx_runtime::{Host, HostConfig, PluginStatus, ScenePhysics};
 

@@ -2,13 +2,13 @@
 
 use std::path::PathBuf;
 
-use onyx_plugin_api::tools::{Diagnostics, PluginInfo, RenderOverrides};
+use onyx_plugin_api::tools::{Diagnostics, PluginInfo};
 
 use crate::diagnostics::FrameDiagnostics;
 use crate::play_mode::PlaySession;
 use crate::scripts::{ScriptRegistry, ScriptRunner};
 
-/// The host's side of the tool services, kept in [`HostState`](super::HostState).
+/// The host's side of the tool services, kept in the host's state.
 #[derive(Debug, Default)]
 pub struct ToolState {
     /// Frame timings and counts.
@@ -27,8 +27,6 @@ pub struct ToolState {
     /// Bumped each time the whole world is replaced (new or opened scene, Stop), so
     /// per-entity bookkeeping knows its handles are stale.
     pub world_generation: u64,
-    /// The view switches tools set.
-    pub render_overrides: RenderOverrides,
     /// The scene file the world was last opened from or saved to.
     pub scene_path: Option<PathBuf>,
 }

@@ -733,3 +733,5 @@ fn the_viewport_camera_flies_zooms_and_frames_the_selection() {
         to_cube.length()
     );
 }
+
+mod scene_graph;

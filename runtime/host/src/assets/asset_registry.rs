@@ -54,6 +54,16 @@ impl AssetRegistry {
         id
     }
 
+    /// The id of the model at `path`, if it was registered.
+    pub fn mesh_id(&self, path: &Path) -> Option<MeshId> {
+        self.mesh_ids.get(path).copied()
+    }
+
+    /// The id of the image at `path`, if it was registered.
+    pub fn texture_id(&self, path: &Path) -> Option<TextureId> {
+        self.texture_ids.get(path).copied()
+    }
+
     /// The file of a loaded-model id (`None` for built-in shapes and unknown ids).
     pub fn mesh_path(&self, id: MeshId) -> Option<&Path> {
         let index = id.0.checked_sub(MeshId::FIRST_LOADED)?;

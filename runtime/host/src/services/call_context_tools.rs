@@ -4,74 +4,65 @@
 use std::path::Path;
 
 use onyx_plugin_api::glam::Vec2;
-use onyx_plugin_api::host::{PlayCommand, ToolServices};
+use onyx_plugin_api::host::{Blob, PlayCommand, ToolServices};
 use onyx_plugin_api::tools::{
-    ComponentEntry, Diagnostics, EntityList, LogLine, PlayMode, PluginInfo, PluginState, Ray,
-    RenderOverrides, ScriptInfo,
+    Diagnostics, EntityList, LogLine, PlayMode, PluginInfo, PluginState, Ray, RenderOverrides,
+    ScriptInfo,
 };
-use onyx_plugin_api::{CtxError, Entity, Name, PlatformEvent};
+use onyx_plugin_api::{BuiltinValue, CtxError, Entity, Name, PlatformEvent};
 
-use super::entity_id::to_api;
-use super::{CallContext, HostState};
-use crate::scene;
+use super::CallContext;
+use crate::entity_id::to_api;
+use crate::scene::{self, SceneError};
 
-fn scene_error(error: crate::scene::SceneError) -> CtxError {
-    CtxError::Invalid {
+/// A scene error as plugins get it: the sentence, and the file, line and column it names.
+fn scene_error(error: SceneError) -> CtxError {
+    let (line, column) = match &error {
+        SceneError::Parse { line, column, .. } => {
+            (u32::try_from(*line).ok(), u32::try_from(*column).ok())
+        }
+        _ => (None, None),
+    };
+    CtxError::Scene {
+        path: error
+            .path()
+            .map(|p| p.display().to_string())
+            .unwrap_or_default(),
+        line,
+        column,
         message: error.to_string(),
-    }
-}
-
-impl HostState {
-    /// Replaces the whole world (new or opened scene): physics rebuilt from the new
-    /// components, the chosen camera forgotten, Stop no longer restores an older world.
-    pub fn replace_world(&mut self, world: hecs::World) {
-        self.world = world;
-        self.after_world_replaced();
-        self.tools.play.forget_snapshot();
-    }
-
-    /// Bookkeeping after the world's entities were all replaced.
-    pub fn after_world_replaced(&mut self) {
-        self.physics.reset();
-        self.camera_override = None;
-        self.tools.world_generation += 1;
     }
 }
 
 impl ToolServices for CallContext<'_> {
     fn entity_list(&mut self) -> EntityList {
-        let world = &self.state.world;
-        let mut rows: Vec<(hecs::Entity, Option<hecs::Ref<'_, Name>>)> = world
-            .iter()
-            .map(|e| (e.entity(), e.get::<&Name>()))
-            .collect();
+        let world = &mut self.state.world;
+        world.hierarchy.refresh_index(&world.ecs);
+        let ecs = &world.ecs;
+        let mut rows: Vec<(hecs::Entity, Option<hecs::Ref<'_, Name>>)> =
+            ecs.iter().map(|e| (e.entity(), e.get::<&Name>())).collect();
         rows.sort_by_key(|(e, _)| e.to_bits());
         let mut list = EntityList::default();
         for (e, name) in &rows {
             list.push(to_api(*e), name.as_deref().map_or("", Name::as_str));
         }
+        for (row, (e, _)) in rows.iter().enumerate() {
+            if let Some(parent) = world.hierarchy.parent(*e) {
+                if let Ok(parent_row) =
+                    rows.binary_search_by_key(&parent.to_bits(), |(p, _)| p.to_bits())
+                {
+                    list.set_parent(row, parent_row);
+                }
+            }
+        }
         list
     }
 
-    fn components_of(&mut self, entity: Entity) -> Result<Vec<ComponentEntry>, CtxError> {
-        self.list_components(entity)
-    }
-
-    fn set_component_json(
+    fn components_of(
         &mut self,
         entity: Entity,
-        type_name: &str,
-        json: &str,
-    ) -> Result<(), CtxError> {
-        self.write_component_json(entity, type_name, json)
-    }
-
-    fn add_component(&mut self, entity: Entity, type_name: &str) -> Result<(), CtxError> {
-        self.add_default_component(entity, type_name)
-    }
-
-    fn remove_component(&mut self, entity: Entity, type_name: &str) -> Result<(), CtxError> {
-        self.remove_component_named(entity, type_name)
+    ) -> Result<(Vec<BuiltinValue>, Vec<Blob>), CtxError> {
+        self.components(entity)
     }
 
     fn new_scene(&mut self) -> Result<(), CtxError> {
@@ -85,7 +76,7 @@ impl ToolServices for CallContext<'_> {
         let path = Path::new(path);
         let mut world = hecs::World::new();
         let opened = scene::read_scene(path).and_then(|file| {
-            let count = scene::spawn_scene(&mut world, &mut self.state.assets, &file, path)?;
+            let count = scene::spawn_scene(&mut world, &mut self.state.world.assets, &file, path)?;
             Ok((count, file.physics))
         });
         match opened {
@@ -101,7 +92,7 @@ impl ToolServices for CallContext<'_> {
             }
             Err(error) => {
                 tracing::error!("{error}");
-                self.state.pending_events.push(
+                self.state.io.events.push(
                     PlatformEvent::Error {
                         message: error.to_string(),
                     }
@@ -114,7 +105,7 @@ impl ToolServices for CallContext<'_> {
 
     fn save_scene(&mut self, path: &str) -> Result<(), CtxError> {
         let path = Path::new(path);
-        let mut file = scene::scene_from_world(&self.state.world, &self.state.assets);
+        let mut file = scene::scene_from_world(&self.state.world);
         file.physics = self.state.physics.scene_physics().cloned();
         scene::write_scene(&file, path).map_err(scene_error)?;
         tracing::info!(path = %path.display(), "saved scene");
@@ -144,7 +135,7 @@ impl ToolServices for CallContext<'_> {
         state
             .tools
             .play
-            .command(command, &state.world, &mut state.clock);
+            .command(command, &state.world.ecs, &mut state.clock);
     }
 
     fn play_mode(&self) -> PlayMode {
@@ -175,14 +166,14 @@ impl ToolServices for CallContext<'_> {
     }
 
     fn screen_ray(&mut self, point: Vec2, size: Vec2) -> Option<Ray> {
-        crate::render::screen_ray(self.state, point, size)
+        crate::render::screen_ray(&self.state.world, &self.state.view, point, size)
     }
 
     fn set_render_overrides(&mut self, overrides: RenderOverrides) {
-        self.state.tools.render_overrides = overrides;
+        self.state.view.overrides = overrides;
     }
 
     fn render_overrides(&self) -> RenderOverrides {
-        self.state.tools.render_overrides
+        self.state.view.overrides
     }
 }

@@ -1,6 +1,6 @@
-//! [`EntityMap`]: per-entity data in a vector indexed by the entity's slot, so the physics
-//! sync finds an entity's body without hashing (it looks up every simulated entity every
-//! fixed step).
+//! [`EntityMap`]: per-entity data in a vector indexed by the entity's slot, so systems that
+//! look up many entities every step (the physics sync, the transform hierarchy) find them
+//! without hashing.
 
 /// A map from live hecs entities to `T`. A slot remembers the full entity (with its
 /// generation), so a despawned entity's reused slot is not mistaken for it.

@@ -7,10 +7,8 @@ use onyx_render::{
     Camera, Lights, OffscreenTarget, Overlay, RenderError, RenderScene, RenderStats, RenderTarget,
 };
 
-use super::gui_painter::GuiPainter;
-use super::gui_system::GuiSystem;
-use crate::render::{RenderSystem, ScreenshotError};
-use crate::world::HostState;
+use super::{RenderInput, RenderSystem, ScreenshotError};
+use crate::gui::{GuiPainter, GuiSystem};
 
 /// The GPU side of plugin GUIs for one render system.
 #[derive(Debug, Default)]
@@ -42,17 +40,18 @@ fn painter_for<'p>(
 /// target gets the GUI only.
 pub fn render_with_gui(
     system: &mut RenderSystem,
-    state: &mut HostState,
+    input: RenderInput<'_>,
+    events: &mut Vec<onyx_plugin_api::Event>,
     target: &mut impl RenderTarget,
     gui: &GuiSystem,
 ) -> Result<RenderStats, RenderError> {
     let frame = gui.frame();
     if frame.primitives.is_empty() {
-        return system.draw(state, target);
+        return system.draw(input, events, target);
     }
     let mut gpu = std::mem::take(&mut system.gui);
     let result = match frame.viewport_pixels() {
-        None => system.draw_with_overlay(state, target, |overlay| {
+        None => system.draw_with_overlay(input, events, target, |overlay| {
             painter_for(&mut gpu.painters, overlay.device, overlay.format).paint(
                 overlay,
                 frame,
@@ -76,7 +75,7 @@ pub fn render_with_gui(
             match viewport.as_mut() {
                 None => Ok(RenderStats::default()),
                 Some((texture, view, generation)) => {
-                    let scene = system.draw(state, texture);
+                    let scene = system.draw(input, events, texture);
                     // The window shows the GUI only, on the renderer's clear colour.
                     let lights = Lights::default();
                     let backdrop = RenderScene::new(
@@ -105,12 +104,13 @@ pub fn render_with_gui(
 /// Draws the world and the plugins' GUIs into a `width` × `height` offscreen image.
 pub fn render_image_with_gui(
     system: &mut RenderSystem,
-    state: &mut HostState,
+    input: RenderInput<'_>,
+    events: &mut Vec<onyx_plugin_api::Event>,
     width: u32,
     height: u32,
     gui: &GuiSystem,
 ) -> Result<onyx_render::image::RgbaImage, ScreenshotError> {
     let mut target = OffscreenTarget::new(system.renderer().gpu(), width.max(1), height.max(1));
-    render_with_gui(system, state, &mut target, gui)?;
+    render_with_gui(system, input, events, &mut target, gui)?;
     Ok(target.read_image(system.renderer().gpu())?)
 }

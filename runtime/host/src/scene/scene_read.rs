@@ -1,0 +1,121 @@
+//! Reading a scene file: RON parsed with line and column errors, its version and physics
+//! checked, and its scene graph checked (unique ids, parents that exist, no cycles).
+
+use std::collections::HashMap;
+use std::path::Path;
+
+use super::{SceneError, SceneFile, OLDEST_SCENE_FORMAT_VERSION, SCENE_FORMAT_VERSION};
+
+/// Parses scene text; `path` is only used in error messages.
+pub fn parse_scene(text: &str, path: &Path) -> Result<SceneFile, SceneError> {
+    let scene: SceneFile = ron::from_str(text).map_err(|e| SceneError::Parse {
+        path: path.to_path_buf(),
+        line: e.span.start.line,
+        column: e.span.start.col,
+        message: e.code.to_string(),
+    })?;
+    if !(OLDEST_SCENE_FORMAT_VERSION..=SCENE_FORMAT_VERSION).contains(&scene.version) {
+        return Err(SceneError::UnsupportedVersion {
+            path: path.to_path_buf(),
+            found: scene.version,
+            oldest: OLDEST_SCENE_FORMAT_VERSION,
+            newest: SCENE_FORMAT_VERSION,
+        });
+    }
+    if let Some(physics) = &scene.physics {
+        physics
+            .validate()
+            .map_err(|message| SceneError::InvalidPhysics {
+                path: path.to_path_buf(),
+                message,
+            })?;
+    }
+    check_hierarchy(&scene, path)?;
+    Ok(scene)
+}
+
+/// Reads and parses the scene at `path`.
+pub fn read_scene(path: &Path) -> Result<SceneFile, SceneError> {
+    let text = std::fs::read_to_string(path).map_err(|source| SceneError::Io {
+        action: "read",
+        path: path.to_path_buf(),
+        source,
+    })?;
+    parse_scene(&text, path)
+}
+
+/// The index of the entity each file id names.
+pub(super) fn ids_of(scene: &SceneFile) -> HashMap<u64, usize> {
+    scene
+        .entities
+        .iter()
+        .enumerate()
+        .filter_map(|(i, e)| e.id.map(|id| (id, i)))
+        .collect()
+}
+
+/// Refuses ids used twice, parents naming no entity and parent chains that loop, naming the
+/// entity at fault.
+fn check_hierarchy(scene: &SceneFile, path: &Path) -> Result<(), SceneError> {
+    let invalid = |index: usize, message: String| SceneError::InvalidEntity {
+        path: path.to_path_buf(),
+        index,
+        name: scene.entities[index].name.clone(),
+        message,
+    };
+    let mut ids: HashMap<u64, usize> = HashMap::new();
+    for (i, entity) in scene.entities.iter().enumerate() {
+        if let Some(id) = entity.id {
+            if let Some(first) = ids.insert(id, i) {
+                return Err(invalid(
+                    i,
+                    format!("its id {id} is already the id of entity #{first}"),
+                ));
+            }
+        }
+    }
+    let parent_of = |i: usize| -> Result<Option<usize>, SceneError> {
+        match scene.entities[i].parent {
+            None => Ok(None),
+            Some(id) => ids.get(&id).copied().map(Some).ok_or_else(|| {
+                invalid(
+                    i,
+                    format!("its parent is id {id}, which no entity of the file has"),
+                )
+            }),
+        }
+    };
+    // 0: not visited, 1: on the chain being followed, 2: known to reach a root.
+    let mut state = vec![0u8; scene.entities.len()];
+    for start in 0..scene.entities.len() {
+        let mut chain = Vec::new();
+        let mut at = Some(start);
+        while let Some(i) = at {
+            match state[i] {
+                2 => break,
+                1 => {
+                    let names: Vec<String> = chain
+                        .iter()
+                        .skip_while(|&&c| c != i)
+                        .map(|&c| format!("#{c}"))
+                        .collect();
+                    return Err(invalid(
+                        i,
+                        format!(
+                            "its parent chain loops back to it ({} → #{i}): a scene graph has no cycles",
+                            names.join(" → ")
+                        ),
+                    ));
+                }
+                _ => {}
+            }
+            state[i] = 1;
+            chain.push(i);
+            at = parent_of(i)?;
+        }
+        for i in chain {
+            state[i] = 2;
+        }
+    }
+    Ok(())
+}
