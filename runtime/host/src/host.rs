@@ -598,7 +598,7 @@ impl Host {
         self.state.world.assets.texture(path)
     }
 
-    /// The state as JSON (see [`crate::state_dump`]).
+    /// The state as JSON: what `onyx run --dump-state` writes (format in the README).
     pub fn dump_state(&self) -> serde_json::Value {
         dump_state(&self.state, &self.plugins)
     }

@@ -64,7 +64,7 @@ pub(crate) mod scripts;
 pub(crate) mod services;
 pub(crate) mod stage;
 pub(crate) mod state;
-pub mod state_dump;
+pub(crate) mod state_dump;
 pub(crate) mod tools;
 pub mod window;
 pub mod world;

@@ -7,6 +7,6 @@
 //!   the local transform that puts an entity at a given world pose.
 
 mod transform_hierarchy;
-pub mod world_pose;
+pub(crate) mod world_pose;
 
 pub use transform_hierarchy::TransformHierarchy;

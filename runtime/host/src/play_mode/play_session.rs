@@ -22,11 +22,6 @@ impl PlaySession {
         self.mode
     }
 
-    /// Whether a snapshot from Play is held (a Stop will restore it).
-    pub fn has_snapshot(&self) -> bool {
-        self.snapshot.is_some()
-    }
-
     /// Applies `command`: `world` is snapshot on Play from Edit; the clock is paused in
     /// Edit and Paused.
     pub fn command(&mut self, command: PlayCommand, world: &hecs::World, clock: &mut FixedClock) {

@@ -43,11 +43,6 @@ impl WorldSnapshot {
         self.records.len()
     }
 
-    /// Whether it holds no entity.
-    pub fn is_empty(&self) -> bool {
-        self.records.is_empty()
-    }
-
     /// Replaces everything in `world` with the snapshot, entity handles included. The
     /// world's scene graph must be told (the caller invalidates it).
     pub fn restore(&self, world: &mut hecs::World) {

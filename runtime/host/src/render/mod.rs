@@ -1,22 +1,22 @@
 //! Drawing the world: onyx-render fed from the ECS.
 //!
 //! - `render_system.rs`: [`RenderSystem`], the renderer and the per-frame scene it draws from
-//!   a [`RenderInput`].
-//! - `render_with_gui.rs`: the scene and the plugins' GUIs drawn together ([`GuiGpu`] per
+//!   a `RenderInput`.
+//! - `render_with_gui.rs`: the scene and the plugins' GUIs drawn together (`GuiGpu` per
 //!   renderer).
-//! - `previous_pose.rs`: [`PreviousPose`], world poses of the previous fixed step, for
+//! - `previous_pose.rs`: `PreviousPose`, world poses of the previous fixed step, for
 //!   interpolation.
-//! - `view_state.rs`: [`ViewState`], the chosen camera, the orbit camera, the view switches;
-//!   `orbit_camera.rs`: [`OrbitCamera`], the view when the scene has no camera.
+//! - `view_state.rs`: `ViewState`, the chosen camera, the orbit camera, the view switches;
+//!   `orbit_camera.rs`: `OrbitCamera`, the view when the scene has no camera.
 //! - `screenshot.rs`: saving a PNG, [`ScreenshotError`].
-//! - `active_camera.rs`: [`active_camera`], the camera the world is seen through;
-//!   `screen_ray.rs`: [`screen_ray`], the ray under a pixel (click-to-select).
-//! - `shader_watcher.rs`: [`ShaderWatcher`], recompiles edited shaders (hot reload), and
-//!   [`shader_dir`], the source checkout's shader folder.
+//! - `active_camera.rs`: `active_camera`, the camera the world is seen through;
+//!   `screen_ray.rs`: `screen_ray`, the ray under a pixel (click-to-select).
+//! - `shader_watcher.rs`: `ShaderWatcher`, recompiles edited shaders (hot reload), and
+//!   `shader_dir`, the source checkout's shader folder.
 
 mod active_camera;
 mod orbit_camera;
-pub mod previous_pose;
+pub(crate) mod previous_pose;
 mod render_system;
 mod render_with_gui;
 mod screen_ray;
@@ -24,12 +24,13 @@ mod screenshot;
 mod shader_watcher;
 mod view_state;
 
-pub use active_camera::active_camera;
-pub use orbit_camera::OrbitCamera;
-pub use previous_pose::PreviousPose;
-pub use render_system::{drawn_poses, RenderInput, RenderSystem};
-pub use render_with_gui::{render_image_with_gui, render_with_gui, GuiGpu};
-pub use screen_ray::screen_ray;
+pub(crate) use active_camera::active_camera;
+pub(crate) use orbit_camera::OrbitCamera;
+pub(crate) use previous_pose::PreviousPose;
+pub use render_system::RenderSystem;
+pub(crate) use render_system::{drawn_poses, RenderInput};
+pub(crate) use render_with_gui::{render_image_with_gui, render_with_gui, GuiGpu};
+pub(crate) use screen_ray::screen_ray;
 pub use screenshot::{save_png, ScreenshotError};
-pub use shader_watcher::{shader_dir, ShaderWatcher};
-pub use view_state::ViewState;
+pub(crate) use shader_watcher::{shader_dir, ShaderWatcher};
+pub(crate) use view_state::ViewState;

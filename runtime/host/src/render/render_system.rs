@@ -243,7 +243,7 @@ impl RenderSystem {
     /// interpolated between the last two fixed steps, through the chosen camera (else the
     /// orbit camera), with the scene's lights (else a default sun), the grid and this
     /// frame's debug lines. GPU errors and assets that fail to load become `events`.
-    pub fn draw(
+    pub(crate) fn draw(
         &mut self,
         input: RenderInput<'_>,
         events: &mut Vec<Event>,
@@ -253,7 +253,7 @@ impl RenderSystem {
     }
 
     /// Like [`RenderSystem::draw`], then `overlay` draws over the finished scene (the GUI).
-    pub fn draw_with_overlay(
+    pub(crate) fn draw_with_overlay(
         &mut self,
         input: RenderInput<'_>,
         events: &mut Vec<Event>,
@@ -329,7 +329,7 @@ impl RenderSystem {
     }
 
     /// Moves the renderer's GPU events into the host's dispatcher.
-    pub fn forward_events(&mut self, events: &mut Vec<Event>) {
+    pub(crate) fn forward_events(&mut self, events: &mut Vec<Event>) {
         for event in self.renderer.drain_events() {
             let message = event.to_string();
             let event = match event {

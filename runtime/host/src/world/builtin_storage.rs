@@ -41,18 +41,6 @@ pub fn get(world: &hecs::World, e: hecs::Entity, id: BuiltinId) -> Option<Builti
     id.dispatch(&mut Get(world, e))
 }
 
-/// Whether `e` has the built-in `id`.
-pub fn has(world: &hecs::World, e: hecs::Entity, id: BuiltinId) -> bool {
-    struct Has<'w>(&'w hecs::World, hecs::Entity);
-    impl BuiltinFn for Has<'_> {
-        type Output = bool;
-        fn call<T: Builtin>(&mut self) -> bool {
-            self.0.satisfies::<&T>(self.1)
-        }
-    }
-    id.dispatch(&mut Has(world, e))
-}
-
 /// Removes the built-in `id` from `e`; whether it had one.
 pub fn remove(world: &mut hecs::World, e: hecs::Entity, id: BuiltinId) -> bool {
     struct Remove<'w>(&'w mut hecs::World, hecs::Entity);
