@@ -50,6 +50,10 @@ pub trait PluginObject: Send {
         host: HostRef<'a>,
         call: ScriptCallFfi<'a>,
     ) -> RResult<(), CallFailure>;
+    /// Drops the plugin (and its GUI) now, inside this image's `catch_unwind`: a panic in
+    /// the plugin's `Drop` becomes an error instead of aborting the process at the boundary.
+    /// Every later call answers an error.
+    fn dispose(&mut self) -> RResult<(), CallFailure>;
 }
 
 /// An owned plugin object.
@@ -115,11 +119,37 @@ fn returned(error: impl std::fmt::Display) -> CallFailure {
 }
 
 /// Holds a safe [`Plugin`] and exposes it as a [`PluginObject`], with the plugin's own
-/// egui context.
+/// egui context. `None` once disposed.
 pub struct PluginAdapter<P> {
-    pub plugin: P,
+    pub plugin: Option<P>,
     pub name: &'static str,
-    pub gui: PluginGui,
+    pub gui: Option<PluginGui>,
+}
+
+fn disposed() -> CallFailure {
+    CallFailure {
+        kind: FailureKind::Returned,
+        message: "the plugin was already dropped".into(),
+    }
+}
+
+/// Runs `f` on the plugin inside `catch_unwind`, or answers an error once it was dropped.
+fn live<P, T>(plugin: &mut Option<P>, f: impl FnOnce(&mut P) -> T) -> RResult<T, CallFailure> {
+    match plugin {
+        Some(plugin) => catch(|| f(plugin)),
+        None => RResult::RErr(disposed()),
+    }
+}
+
+impl<P> Drop for PluginAdapter<P> {
+    /// A host that did not [`PluginObject::dispose`] the plugin first still must not abort:
+    /// the drop runs inside `catch_unwind` (the panic is printed by the panic hook).
+    fn drop(&mut self) {
+        let (plugin, gui) = (self.plugin.take(), self.gui.take());
+        if plugin.is_some() || gui.is_some() {
+            let _ = catch(move || drop((plugin, gui)));
+        }
+    }
 }
 
 impl<P: Plugin> PluginObject for PluginAdapter<P> {
@@ -133,31 +163,33 @@ impl<P: Plugin> PluginObject for PluginAdapter<P> {
         info: AttachInfoFfi<'a>,
     ) -> RResult<(), CallFailure> {
         let info = AttachInfo::from(info);
-        catch(|| self.plugin.on_attach(&mut Ctx::new(host), &info))
-            .and_then(|r| r.map_err(returned).into())
+        live(&mut self.plugin, |p| {
+            p.on_attach(&mut Ctx::new(host), &info)
+        })
+        .and_then(|r| r.map_err(returned).into())
     }
 
     fn on_init<'a>(&mut self, host: HostRef<'a>) -> RResult<(), CallFailure> {
-        catch(|| self.plugin.on_init(&mut Ctx::new(host)))
+        live(&mut self.plugin, |p| p.on_init(&mut Ctx::new(host)))
     }
 
     fn on_event<'a>(&mut self, host: HostRef<'a>, event: EventFfi<'a>) -> RResult<(), CallFailure> {
-        catch(|| {
+        live(&mut self.plugin, |p| {
             let event = Event::from(event);
-            self.plugin.on_event(&mut Ctx::new(host), &event)
+            p.on_event(&mut Ctx::new(host), &event)
         })
     }
 
     fn on_fixed_update<'a>(&mut self, host: HostRef<'a>) -> RResult<(), CallFailure> {
-        catch(|| self.plugin.on_fixed_update(&mut Ctx::new(host)))
+        live(&mut self.plugin, |p| p.on_fixed_update(&mut Ctx::new(host)))
     }
 
     fn on_update<'a>(&mut self, host: HostRef<'a>, dt: f32) -> RResult<Flow, CallFailure> {
-        catch(|| self.plugin.on_update(&mut Ctx::new(host), dt))
+        live(&mut self.plugin, |p| p.on_update(&mut Ctx::new(host), dt))
     }
 
     fn on_render<'a>(&mut self, host: HostRef<'a>) -> RResult<(), CallFailure> {
-        catch(|| self.plugin.on_render(&mut Ctx::new(host)))
+        live(&mut self.plugin, |p| p.on_render(&mut Ctx::new(host)))
     }
 
     fn draw_gui<'a>(
@@ -166,9 +198,12 @@ impl<P: Plugin> PluginObject for PluginAdapter<P> {
         input: GuiInputFfi<'a>,
     ) -> RResult<GuiOutputFfi, CallFailure> {
         let Self { plugin, gui, .. } = self;
-        catch(|| {
+        let Some(gui) = gui else {
+            return RResult::RErr(disposed());
+        };
+        live(plugin, |p| {
             let mut ctx = Ctx::new(host);
-            gui.run(input, |ui| plugin.draw_gui(&mut ctx, ui))
+            gui.run(input, |ui| p.draw_gui(&mut ctx, ui))
         })
     }
 
@@ -178,19 +213,23 @@ impl<P: Plugin> PluginObject for PluginAdapter<P> {
         width: u32,
         height: u32,
     ) -> RResult<(), CallFailure> {
-        catch(|| self.plugin.on_resize(&mut Ctx::new(host), width, height))
+        live(&mut self.plugin, |p| {
+            p.on_resize(&mut Ctx::new(host), width, height)
+        })
     }
 
     fn on_detach<'a>(&mut self, host: HostRef<'a>) -> RResult<(), CallFailure> {
-        catch(|| self.plugin.on_detach(&mut Ctx::new(host)))
+        live(&mut self.plugin, |p| p.on_detach(&mut Ctx::new(host)))
     }
 
     fn save_state(&mut self) -> RResult<RVec<u8>, CallFailure> {
-        catch(|| self.plugin.save_state()).and_then(|r| r.map(RVec::from).map_err(returned).into())
+        live(&mut self.plugin, |p| p.save_state())
+            .and_then(|r| r.map(RVec::from).map_err(returned).into())
     }
 
     fn load_state(&mut self, state: RSlice<'_, u8>) -> RResult<(), CallFailure> {
-        catch(|| self.plugin.load_state(state.as_slice())).and_then(|r| r.map_err(returned).into())
+        live(&mut self.plugin, |p| p.load_state(state.as_slice()))
+            .and_then(|r| r.map_err(returned).into())
     }
 
     fn on_script<'a>(
@@ -198,10 +237,15 @@ impl<P: Plugin> PluginObject for PluginAdapter<P> {
         host: HostRef<'a>,
         call: ScriptCallFfi<'a>,
     ) -> RResult<(), CallFailure> {
-        catch(|| {
+        live(&mut self.plugin, |p| {
             let call = crate::ScriptCall::from(call);
-            self.plugin.on_script(&mut Ctx::new(host), &call)
+            p.on_script(&mut Ctx::new(host), &call)
         })
+    }
+
+    fn dispose(&mut self) -> RResult<(), CallFailure> {
+        let (plugin, gui) = (self.plugin.take(), self.gui.take());
+        catch(move || drop((plugin, gui)))
     }
 }
 
@@ -213,9 +257,9 @@ pub fn new_plugin_box<P: Plugin>(
     catch(|| {
         PluginObject_TO::from_value(
             PluginAdapter {
-                plugin: make(),
+                plugin: Some(make()),
                 name,
-                gui: PluginGui::default(),
+                gui: Some(PluginGui::default()),
             },
             abi_stable::sabi_trait::TD_Opaque,
         )

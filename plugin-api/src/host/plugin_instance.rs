@@ -170,4 +170,11 @@ impl PluginInstance {
             .into_result()
             .map_err(CallError::from)
     }
+
+    /// Drops the plugin object now, inside the plugin's own image (a panic in its `Drop`
+    /// comes back as an error). Call it before letting the instance go; afterwards every
+    /// call answers an error.
+    pub fn dispose(&mut self) -> Result<(), CallError> {
+        self.object.dispose().into_result().map_err(CallError::from)
+    }
 }

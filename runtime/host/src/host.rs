@@ -40,15 +40,19 @@ pub struct Host {
     shut_down: bool,
     pub(crate) watcher: Option<crate::plugins::LibraryWatcher>,
     pub(crate) gui: crate::gui::GuiSystem,
+    /// What made the run unclean besides a faulted plugin still loaded (a plugin that
+    /// panicked while being dropped, or whose state could not be carried over).
+    pub(crate) incidents: Vec<String>,
 }
 
 impl Host {
     /// A host with an empty world.
     pub fn new(config: HostConfig) -> Self {
-        let state = HostState::new(
+        let mut state = HostState::new(
             FixedClock::new(config.clock),
             crate::assets::AssetRegistry::new(config.asset_root),
         );
+        state.io.max_events_per_frame = config.max_events_per_frame;
         Self {
             state,
             plugins: Vec::new(),
@@ -58,6 +62,7 @@ impl Host {
             shut_down: false,
             watcher: None,
             gui: crate::gui::GuiSystem::default(),
+            incidents: Vec::new(),
         }
     }
 
@@ -179,9 +184,10 @@ impl Host {
         Ok(())
     }
 
-    /// Logs a load error and raises it as a platform event; returns it.
+    /// Raises a load error as a platform event; returns it (the caller reports it: the CLI
+    /// in one `onyx:` line, the frame's plugin requests in the log).
     fn report(&mut self, error: PluginLoadError) -> PluginLoadError {
-        tracing::error!("{error}");
+        tracing::debug!("{error}");
         self.state
             .io
             .events
@@ -198,6 +204,9 @@ impl Host {
         };
         let mut slot = self.plugins.remove(index);
         slot.call(&mut self.state, Stage::Detach, |p, cx| p.on_detach(cx));
+        if let Some(incident) = slot.dispose(&mut self.state) {
+            self.incidents.push(incident);
+        }
         self.gui.forget(name);
         self.state.tools.scripts.remove_plugin(name);
         if let (Some(watcher), PluginOrigin::Library { path, .. }) =
@@ -239,8 +248,20 @@ impl Host {
     }
 
     /// Queues an event for the next dispatch (input events also update the input state then).
+    /// An input event holding a number no device sends is dropped (NaN, infinity) or brought
+    /// into range (a scroll of `-f32::MAX`) first.
     pub fn push_event(&mut self, event: impl Into<Event>) {
-        self.state.io.events.push(event.into());
+        let event = match event.into() {
+            Event::Input(input) => match crate::gui::input_sanitizer::sanitized(input) {
+                Some(input) => Event::Input(input),
+                None => {
+                    tracing::debug!("an input event with a non-finite value was dropped");
+                    return;
+                }
+            },
+            other => other,
+        };
+        self.state.io.events.push(event);
     }
 
     /// Runs one frame that took `real_dt` seconds of real time.
@@ -249,6 +270,7 @@ impl Host {
         self.begin_tool_frame();
         self.poll_hot_reload();
         self.state.io.debug_lines.clear();
+        self.state.io.sent.clear();
         self.dispatch_events();
         let steps = self.state.clock.begin_frame(real_dt);
         for _ in 0..steps {
@@ -407,6 +429,18 @@ impl Host {
         for slot in self.plugins.iter_mut().rev() {
             slot.call(&mut self.state, Stage::Detach, |p, cx| p.on_detach(cx));
         }
+        // Dropped in the same order, each inside its own image; a panicking `Drop` faults
+        // its plugin (the status says so) and the others are still dropped.
+        for slot in self.plugins.iter_mut().rev() {
+            slot.dispose(&mut self.state);
+        }
+    }
+
+    /// Everything that made this run unclean apart from the status of the plugins still
+    /// loaded: a plugin that panicked while being dropped after an unload or a reload, a
+    /// reload whose state could not be carried over. One sentence each.
+    pub fn incidents(&self) -> &[String] {
+        &self.incidents
     }
 
     // ----- world, time, scenes -----
@@ -508,7 +542,8 @@ impl Host {
         match &loaded {
             Ok(n) => tracing::info!(path = %path.display(), entities = n, "loaded scene"),
             Err(error) => {
-                tracing::error!("{error}");
+                // Returned to the caller, who reports it; plugins hear of it as an event.
+                tracing::debug!("{error}");
                 self.push_event(PlatformEvent::Error {
                     message: error.to_string(),
                 });
@@ -562,6 +597,15 @@ impl Host {
         width: u32,
         height: u32,
     ) -> Result<onyx_render::image::RgbaImage, crate::render::ScreenshotError> {
+        let max = system
+            .renderer()
+            .gpu()
+            .device()
+            .limits()
+            .max_texture_dimension_2d;
+        if width > max || height > max {
+            return Err(crate::render::ScreenshotError::TooLarge { width, height, max });
+        }
         let raised = self.state.io.events.len();
         let image = {
             let (input, events) = self.state.render_input();

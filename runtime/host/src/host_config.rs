@@ -2,6 +2,7 @@
 
 use crate::clock::ClockSettings;
 use crate::plugins::PluginSearchPath;
+pub use crate::state::DEFAULT_MAX_EVENTS_PER_FRAME;
 
 /// Everything a [`Host`](crate::Host) is built from.
 #[derive(Clone, Debug)]
@@ -15,6 +16,12 @@ pub struct HostConfig {
     /// The folder relative model and texture paths start from (default: the working
     /// directory).
     pub asset_root: std::path::PathBuf,
+    /// Most custom events one plugin may send in one frame (default
+    /// [`DEFAULT_MAX_EVENTS_PER_FRAME`]). A plugin that sends more is faulted and the rest
+    /// are dropped: an event answered with two would otherwise fill memory until the host
+    /// aborts. Too low refuses a plugin's legitimate bursts; too high lets a flood grow the
+    /// queue (each event is kept until the next frame).
+    pub max_events_per_frame: u32,
 }
 
 impl Default for HostConfig {
@@ -24,6 +31,7 @@ impl Default for HostConfig {
             plugin_settings: Vec::new(),
             search_path: PluginSearchPath::from_env(),
             asset_root: std::path::PathBuf::new(),
+            max_events_per_frame: DEFAULT_MAX_EVENTS_PER_FRAME,
         }
     }
 }

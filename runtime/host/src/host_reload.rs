@@ -20,6 +20,18 @@ fn message(error: &CallError) -> String {
     }
 }
 
+/// Drops a new build that will not be used, inside its own image; the sentence reporting a
+/// panic in its `Drop`, if any.
+fn discard(new: &mut onyx_plugin_api::host::PluginInstance, name: &str) -> Option<String> {
+    let error = new.dispose().err()?;
+    let incident = format!(
+        "the new build of plugin `{name}` failed while being dropped after a failed reload ({})",
+        message(&error)
+    );
+    tracing::error!(plugin = name, "{incident}");
+    Some(incident)
+}
+
 impl Host {
     /// Starts (or stops) watching every plugin loaded from a file: when a library is rebuilt,
     /// the plugin is reloaded at the start of the next frame.
@@ -156,9 +168,9 @@ impl Host {
         };
 
         // 1. Load and build the new version; nothing has changed yet.
-        let (library, loaded_from) = open_library(&path).map_err(|source| ReloadError::Load {
+        let (library, loaded_from) = open_library(&path).map_err(|cause| ReloadError::Load {
             plugin: name.to_owned(),
-            source: Box::new(source),
+            cause: Box::new(cause),
         })?;
         if library.name() != name {
             return Err(ReloadError::NameChanged {
@@ -171,17 +183,34 @@ impl Host {
             .instantiate()
             .map_err(|e| step("constructor", "new", &e))?;
 
-        // 2. Carry the state over (a faulted plugin's state is not trusted: start fresh).
+        // 2. Carry the state over (a faulted plugin's state is not trusted: start fresh). A
+        //    panic on either side faults the plugin: the old build stays in place, not called
+        //    again, and the run is no longer clean; an error returned just refuses the swap.
         let slot = &mut self.plugins[index];
         let was_running = !slot.status.is_faulted();
         if was_running {
-            let state = slot
+            let carried = slot
                 .instance
                 .save_state()
-                .map_err(|e| step("save_state", "old", &e))?;
-            if !state.is_empty() {
-                new.load_state(&state)
-                    .map_err(|e| step("load_state", "new", &e))?;
+                .map_err(|e| (Stage::SaveState, "old", e));
+            let carried = carried.and_then(|state| {
+                if state.is_empty() {
+                    Ok(())
+                } else {
+                    new.load_state(&state)
+                        .map_err(|e| (Stage::LoadState, "new", e))
+                }
+            });
+            if let Err((stage, which, error)) = carried {
+                if let Some(incident) = discard(&mut new, name) {
+                    self.incidents.push(incident);
+                }
+                let failed = step(stage.as_str(), which, &error);
+                if matches!(error, CallError::Panicked { .. }) {
+                    // The faulted status reports it (and makes the run unclean).
+                    self.plugins[index].fault(&mut self.state, stage, &error);
+                }
+                return Err(failed);
             }
         }
 
@@ -199,6 +228,9 @@ impl Host {
             new.on_attach(&mut cx, &info)
         };
         if let Err(error) = attached {
+            if let Some(incident) = discard(&mut new, name) {
+                self.incidents.push(incident);
+            }
             if was_running {
                 // Put the old build back, told it is being re-attached.
                 let revived = {
@@ -213,9 +245,24 @@ impl Host {
             }
             return Err(step("on_attach", "new", &error));
         }
-        // The old plugin object is dropped here; its image stays mapped.
-        slot.instance = new;
+        // The old plugin object is dropped here, inside its own image (which stays mapped).
+        let mut old = std::mem::replace(&mut slot.instance, new);
         slot.status = PluginStatus::Running;
+        if let Err(error) = old.dispose() {
+            let incident = format!(
+                "the previous build of plugin `{name}` failed while being dropped after a \
+                 reload ({}); the new build runs",
+                message(&error)
+            );
+            tracing::error!(plugin = name, "{incident}");
+            self.state
+                .io
+                .events
+                .push(Event::Platform(PlatformEvent::Error {
+                    message: incident.clone(),
+                }));
+            self.incidents.push(incident);
+        }
         slot.origin = PluginOrigin::Library { path, loaded_from };
         slot.content_hash = hash;
         slot.reloads += 1;
@@ -236,7 +283,9 @@ impl Host {
                     let _ = self.reload_all();
                 }
                 PluginRequest::Load(spec) => {
-                    let _ = self.load_plugin(&spec);
+                    if let Err(error) = self.load_plugin(&spec) {
+                        tracing::error!("{error}");
+                    }
                 }
                 PluginRequest::Unload(name) => {
                     if !self.unload_plugin(&name) {

@@ -72,7 +72,7 @@ pub mod world;
 pub use assets::AssetRegistry;
 pub use headless_host::HeadlessHost;
 pub use host::{FrameReport, Host};
-pub use host_config::HostConfig;
+pub use host_config::{HostConfig, DEFAULT_MAX_EVENTS_PER_FRAME};
 pub use onyx_physics::PhysicsPreset;
 pub use physics::ScenePhysics;
 pub use plugins::{PluginLoadError, PluginStatus, ReloadError};

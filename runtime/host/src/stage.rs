@@ -29,6 +29,8 @@ pub enum Stage {
     LoadState,
     /// `on_script` (a registered script running on an entity).
     Script,
+    /// The plugin's `Drop` (when it is unloaded, replaced by a new build, or the host ends).
+    Drop,
 }
 
 impl Stage {
@@ -48,6 +50,7 @@ impl Stage {
             Stage::SaveState => "save_state",
             Stage::LoadState => "load_state",
             Stage::Script => "on_script",
+            Stage::Drop => "drop",
         }
     }
 

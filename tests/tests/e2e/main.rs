@@ -7,6 +7,7 @@ mod dev_loop;
 mod editor;
 mod faults;
 mod gui;
+mod hardening;
 mod hierarchy;
 mod host_services;
 mod lifecycle;

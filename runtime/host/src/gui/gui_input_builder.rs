@@ -157,6 +157,7 @@ impl GuiInputBuilder {
         if let Some(mut raw) = self.external.take() {
             raw.time = Some(time);
             raw.predicted_dt = dt;
+            super::input_sanitizer::sanitize(&mut raw);
             return raw;
         }
         let size =
@@ -180,6 +181,7 @@ impl GuiInputBuilder {
                 },
             );
         }
+        super::input_sanitizer::sanitize(&mut raw);
         raw
     }
 }

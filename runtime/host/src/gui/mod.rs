@@ -6,6 +6,7 @@
 //! - `gui_frame.rs`: [`GuiFrame`], what to paint this frame.
 //! - `gui_input_builder.rs`: [`GuiInputBuilder`], host input events → `egui::RawInput`.
 //! - `egui_keys.rs`: Onyx keys and buttons as egui's.
+//! - `input_sanitizer.rs`: input numbers no device sends, dropped or brought into range.
 //! - `gui_textures.rs`: [`GuiTextures`], plugin textures under host-unique ids.
 //! - `gui_painter.rs`: [`GuiPainter`], egui-wgpu drawing over a rendered frame.
 //! - `viewport_request.rs`: where a plugin shows the scene viewport.
@@ -17,6 +18,7 @@ mod gui_input_builder;
 mod gui_painter;
 mod gui_system;
 mod gui_textures;
+pub(crate) mod input_sanitizer;
 mod viewport_request;
 mod widget_query;
 

@@ -32,6 +32,18 @@ pub enum PluginLoadError {
         /// The path given.
         path: PathBuf,
     },
+    /// The path names a directory, a device, a FIFO or a socket, not a library file.
+    #[error(
+        "`{}` is {kind}, not a plugin library file: pass the library itself, e.g. \
+         `target/debug/libNAME.so` (`onyx plugins` lists the ones it finds)",
+        .path.display()
+    )]
+    NotAFile {
+        /// The path given.
+        path: PathBuf,
+        /// What it is ("a directory", …).
+        kind: &'static str,
+    },
     /// The file is not a loadable shared library.
     #[error(
         "`{}` is not a shared library the loader can open ({reason}); pass the `.so`/`.dylib`/`.dll` \
@@ -46,7 +58,8 @@ pub enum PluginLoadError {
     },
     /// The file is shorter than its own headers say: a build still being written, or cut off.
     #[error(
-        "`{}` is incomplete ({actual} of {needed} bytes): it is still being written or was cut          off; rebuild it",
+        "`{}` is incomplete ({actual} of {needed} bytes): it is still being written or was cut \
+         off; rebuild it",
         .path.display()
     )]
     Truncated {
@@ -137,12 +150,11 @@ pub enum PluginLoadError {
         plugin: String,
     },
     /// The file could not be copied to a fresh path for loading.
-    #[error("could not copy `{}` to a fresh path for loading: {source}", .path.display())]
+    #[error("could not copy `{}` to a fresh path for loading: {cause}", .path.display())]
     Copy {
         /// The file.
         path: PathBuf,
-        /// The I/O error.
-        #[source]
-        source: std::io::Error,
+        /// The I/O error (in the sentence, not chained as a `source`).
+        cause: std::io::Error,
     },
 }

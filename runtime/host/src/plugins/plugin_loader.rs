@@ -16,11 +16,30 @@ use super::PluginLoadError;
 /// hot reload — opens a fresh copy; on Unix the copy is deleted right after opening (the
 /// mapping stays valid).
 pub fn open_library(path: &Path) -> Result<(PluginLibrary, PathBuf), PluginLoadError> {
-    if !path.is_file() {
-        return Err(PluginLoadError::MissingFile {
-            path: path.to_path_buf(),
-        });
+    match std::fs::metadata(path) {
+        Err(_) => {
+            return Err(PluginLoadError::MissingFile {
+                path: path.to_path_buf(),
+            })
+        }
+        Ok(m) if !m.is_file() => {
+            return Err(PluginLoadError::NotAFile {
+                path: path.to_path_buf(),
+                kind: if m.is_dir() {
+                    "a directory"
+                } else {
+                    "not a regular file (a device, FIFO or socket)"
+                },
+            })
+        }
+        Ok(_) => {}
     }
+    // One load at a time in this process: the copy folder is emptied and removed after each
+    // load, which must not race another load copying into it.
+    static LOADING: std::sync::Mutex<()> = std::sync::Mutex::new(());
+    let _loading = LOADING
+        .lock()
+        .unwrap_or_else(std::sync::PoisonError::into_inner);
     let copy = fresh_copy(path)?;
     // Check the copy (the original may still be changing).
     if let Ok(Some((needed, actual))) = super::library_completeness::truncation(&copy) {
@@ -34,18 +53,27 @@ pub fn open_library(path: &Path) -> Result<(PluginLibrary, PathBuf), PluginLoadE
     let opened = PluginLibrary::open(&copy);
     if cfg!(unix) {
         let _ = std::fs::remove_file(&copy);
+        // Empty again on Unix (the mapping outlives the file): nothing is left behind.
+        if let Some(dir) = copy.parent() {
+            let _ = std::fs::remove_dir(dir);
+        }
     }
     let library = opened.map_err(|error| describe(path, error))?;
     Ok((library, copy))
 }
 
+/// The folder prefix of the fresh copies, followed by the process id.
+const COPY_DIR_PREFIX: &str = "onyx-plugins-";
+
 fn fresh_copy(path: &Path) -> Result<PathBuf, PluginLoadError> {
     static COUNTER: AtomicU64 = AtomicU64::new(0);
-    let copy_error = |source| PluginLoadError::Copy {
+    static SWEPT: std::sync::Once = std::sync::Once::new();
+    SWEPT.call_once(remove_stale_copy_dirs);
+    let copy_error = |cause| PluginLoadError::Copy {
         path: path.to_path_buf(),
-        source,
+        cause,
     };
-    let dir = std::env::temp_dir().join(format!("onyx-plugins-{}", std::process::id()));
+    let dir = std::env::temp_dir().join(format!("{COPY_DIR_PREFIX}{}", std::process::id()));
     std::fs::create_dir_all(&dir).map_err(copy_error)?;
     let n = COUNTER.fetch_add(1, Ordering::Relaxed);
     let file_name = path
@@ -55,6 +83,39 @@ fn fresh_copy(path: &Path) -> Result<PathBuf, PluginLoadError> {
     let copy = dir.join(format!("{n}-{file_name}"));
     std::fs::copy(path, &copy).map_err(copy_error)?;
     Ok(copy)
+}
+
+/// Removes the copy folders of processes that no longer run (a crash, a kill, or a platform
+/// where a mapped file cannot be deleted). Where it cannot tell whether a process runs
+/// (no `/proc`), it leaves the folders alone.
+fn remove_stale_copy_dirs() {
+    let proc = Path::new("/proc");
+    if !proc.join("self").exists() {
+        return;
+    }
+    let Ok(entries) = std::fs::read_dir(std::env::temp_dir()) else {
+        return;
+    };
+    for entry in entries.flatten() {
+        let name = entry.file_name();
+        let Some(pid) = name
+            .to_str()
+            .and_then(|n| n.strip_prefix(COPY_DIR_PREFIX))
+            .and_then(|pid| pid.parse::<u32>().ok())
+        else {
+            continue;
+        };
+        if pid != std::process::id() && !proc.join(pid.to_string()).exists() {
+            match std::fs::remove_dir_all(entry.path()) {
+                Ok(()) => {
+                    tracing::debug!(dir = %entry.path().display(), "removed stale plugin copies")
+                }
+                Err(e) => {
+                    tracing::debug!(dir = %entry.path().display(), "cannot remove stale plugin copies: {e}")
+                }
+            }
+        }
+    }
 }
 
 fn describe(path: &Path, error: LibraryError) -> PluginLoadError {

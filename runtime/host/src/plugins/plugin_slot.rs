@@ -73,12 +73,38 @@ impl PluginSlot {
             f(&mut self.instance, &mut cx)
         };
         (state.tools.diagnostics.timer).record(&self.name, stage, start.elapsed());
+        let result = match state.io.flooded.take() {
+            Some(flooder) if flooder == self.name => Err(CallError::Returned {
+                message: format!(
+                    "it sent more than {} custom events in one frame (the host setting \
+                     `max_events_per_frame`); the rest were dropped",
+                    state.io.max_events_per_frame
+                ),
+            }),
+            other => {
+                state.io.flooded = other;
+                result
+            }
+        };
         match result {
             Ok(value) => Some(value),
             Err(error) => {
                 self.fault(state, stage, &error);
                 None
             }
+        }
+    }
+
+    /// Drops the plugin object (inside its own image); a panic in its `Drop` faults the slot
+    /// (stage `drop`) and is returned as the sentence that reports it.
+    pub(crate) fn dispose(&mut self, state: &mut HostState) -> Option<String> {
+        let error = self.instance.dispose().err()?;
+        self.fault(state, Stage::Drop, &error);
+        match &self.status {
+            PluginStatus::Faulted { message, .. } => {
+                Some(format!("plugin `{}` faulted in drop: {message}", self.name))
+            }
+            PluginStatus::Running => None,
         }
     }
 

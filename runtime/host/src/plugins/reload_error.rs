@@ -22,13 +22,12 @@ pub enum ReloadError {
         plugin: String,
     },
     /// The new file could not be loaded.
-    #[error("the new build of plugin `{plugin}` could not be loaded: {source}")]
+    #[error("the new build of plugin `{plugin}` could not be loaded: {cause}")]
     Load {
         /// The plugin.
         plugin: String,
         /// Why.
-        #[source]
-        source: Box<PluginLoadError>,
+        cause: Box<PluginLoadError>,
     },
     /// The file now holds another plugin.
     #[error(

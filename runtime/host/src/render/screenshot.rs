@@ -16,6 +16,20 @@ pub enum ScreenshotError {
     /// Reading the image back failed.
     #[error("could not read the screenshot back: {0}")]
     Readback(#[from] ReadbackError),
+    /// The image is larger than the GPU's largest texture: it cannot be drawn (it would come
+    /// back empty).
+    #[error(
+        "a {width} × {height} screenshot is larger than this GPU's largest image \
+         ({max} × {max} pixels); ask for a smaller --size"
+    )]
+    TooLarge {
+        /// Width asked for, pixels.
+        width: u32,
+        /// Height asked for, pixels.
+        height: u32,
+        /// The GPU's limit on either side, pixels.
+        max: u32,
+    },
     /// Writing the file failed.
     #[error("could not write the screenshot to `{}`: {message}", .path.display())]
     Save {

@@ -8,15 +8,15 @@ use std::path::{Path, PathBuf};
 #[non_exhaustive]
 pub enum SceneError {
     /// The file could not be read or written.
-    #[error("could not {action} scene `{}`: {source}", .path.display())]
+    // The cause is in the sentence, not chained as a `source` (printed twice otherwise).
+    #[error("could not {action} scene `{}`: {cause}", .path.display())]
     Io {
         /// "read" or "write".
         action: &'static str,
         /// The file.
         path: PathBuf,
         /// The I/O error.
-        #[source]
-        source: std::io::Error,
+        cause: std::io::Error,
     },
     /// The file is not valid scene RON.
     #[error("scene `{}` is malformed at line {line}, column {column}: {message}", .path.display())]

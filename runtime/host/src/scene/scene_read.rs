@@ -36,10 +36,10 @@ pub fn parse_scene(text: &str, path: &Path) -> Result<SceneFile, SceneError> {
 
 /// Reads and parses the scene at `path`.
 pub fn read_scene(path: &Path) -> Result<SceneFile, SceneError> {
-    let text = std::fs::read_to_string(path).map_err(|source| SceneError::Io {
+    let text = std::fs::read_to_string(path).map_err(|cause| SceneError::Io {
         action: "read",
         path: path.to_path_buf(),
-        source,
+        cause,
     })?;
     parse_scene(&text, path)
 }

@@ -77,9 +77,9 @@ pub fn write_scene(scene: &SceneFile, path: &Path) -> Result<(), SceneError> {
                 message: e.to_string(),
             }
         })?;
-    crate::fs::write_atomically(path, text.as_bytes()).map_err(|source| SceneError::Io {
+    crate::fs::write_atomically(path, text.as_bytes()).map_err(|cause| SceneError::Io {
         action: "write",
         path: path.to_path_buf(),
-        source,
+        cause,
     })
 }

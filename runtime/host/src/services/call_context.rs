@@ -431,6 +431,9 @@ impl HostServices for CallContext<'_> {
     }
 
     fn send(&mut self, name: &str, payload: &[u8]) {
+        if !self.state.io.count_sent(self.plugin) {
+            return;
+        }
         self.state.io.events.push(Event::Custom(CustomEvent {
             name: name.to_owned(),
             sender: self.plugin.to_owned(),

@@ -1,11 +1,16 @@
 //! [`FrameIo`]: what flows through one frame — events, input, requests, debug lines.
 
+use std::collections::HashMap;
+
 use onyx_plugin_api::host::PluginRequest;
 use onyx_plugin_api::{DebugLine, Event, InputState};
 
+/// The default of `HostConfig::max_events_per_frame`.
+pub const DEFAULT_MAX_EVENTS_PER_FRAME: u32 = 10_000;
+
 /// A frame's input and output, apart from the world: systems borrow just this to raise an
 /// event or read a key.
-#[derive(Debug, Default)]
+#[derive(Debug)]
 pub struct FrameIo {
     /// Events waiting for the next dispatch.
     pub events: Vec<Event>,
@@ -17,4 +22,45 @@ pub struct FrameIo {
     pub plugin_requests: Vec<PluginRequest>,
     /// Debug lines plugins drew this frame.
     pub debug_lines: Vec<DebugLine>,
+    /// Custom events each plugin sent this frame.
+    pub sent: HashMap<String, u32>,
+    /// Most custom events one plugin may send per frame.
+    pub max_events_per_frame: u32,
+    /// A plugin that went over the limit during the call being made (it is faulted when the
+    /// call returns).
+    pub flooded: Option<String>,
+}
+
+impl Default for FrameIo {
+    fn default() -> Self {
+        Self {
+            events: Vec::new(),
+            input: InputState::default(),
+            quit_requested: false,
+            plugin_requests: Vec::new(),
+            debug_lines: Vec::new(),
+            sent: HashMap::new(),
+            max_events_per_frame: DEFAULT_MAX_EVENTS_PER_FRAME,
+            flooded: None,
+        }
+    }
+}
+
+impl FrameIo {
+    /// Counts one custom event from `plugin`; `false` once it is over the limit (the event
+    /// is dropped and the plugin marked).
+    pub fn count_sent(&mut self, plugin: &str) -> bool {
+        let count = match self.sent.get_mut(plugin) {
+            Some(count) => count,
+            None => self.sent.entry(plugin.to_owned()).or_default(),
+        };
+        *count += 1;
+        if *count <= self.max_events_per_frame {
+            return true;
+        }
+        if self.flooded.is_none() {
+            self.flooded = Some(plugin.to_owned());
+        }
+        false
+    }
 }

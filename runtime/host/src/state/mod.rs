@@ -6,5 +6,5 @@
 mod frame_io;
 mod host_state;
 
-pub use frame_io::FrameIo;
+pub use frame_io::{FrameIo, DEFAULT_MAX_EVENTS_PER_FRAME};
 pub use host_state::HostState;

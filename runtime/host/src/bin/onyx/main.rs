@@ -11,7 +11,7 @@ use clap::Parser;
 use onyx_runtime::clock::ClockSettings;
 use onyx_runtime::fs::write_atomically;
 use onyx_runtime::plugins::{plugin_search, PluginSearchPath};
-use onyx_runtime::render::{save_png, RenderSystem};
+use onyx_runtime::render::{save_png, RenderSystem, ScreenshotError};
 use onyx_runtime::window::{run_windowed, WindowOptions};
 use onyx_runtime::{Host, HostConfig, PluginStatus, ScenePhysics};
 
@@ -73,10 +73,11 @@ fn host_config(args: &HostArgs) -> HostConfig {
         search_path: PluginSearchPath::from_env(),
         // Relative model and texture paths start from the working directory.
         asset_root: Default::default(),
+        ..HostConfig::default()
     }
 }
 
-/// `Err(Failure::Run)` naming every faulted plugin, if any.
+/// `Err(Failure::Run)` naming every faulted plugin and every other incident, if any.
 fn check_faults(host: &Host) -> Result<(), Failure> {
     let faults: Vec<String> = host
         .plugins()
@@ -88,6 +89,7 @@ fn check_faults(host: &Host) -> Result<(), Failure> {
             )),
             PluginStatus::Running => None,
         })
+        .chain(host.incidents().iter().cloned())
         .collect();
     if !faults.is_empty() {
         return Err(Failure::Run(anyhow::anyhow!(faults.join("; "))));
@@ -159,7 +161,7 @@ fn run(run_args: RunArgs) -> Result<(), Failure> {
         (summary.frames, summary.render)
     };
     if let Some(path) = &run_args.screenshot {
-        screenshot(&mut host, render, args.size, path).map_err(Failure::Run)?;
+        screenshot(&mut host, render, args.size, path)?;
     }
     host.shutdown();
     tracing::info!(frames, ticks = host.time().ticks, "run finished");
@@ -180,18 +182,27 @@ fn run(run_args: RunArgs) -> Result<(), Failure> {
 }
 
 /// Renders the world offscreen (with the window's renderer when there was one) and saves it.
+/// A size the GPU cannot draw is refused like a bad argument (exit 2); any other failure is
+/// a failed run (exit 1).
 fn screenshot(
     host: &mut Host,
     render: Option<RenderSystem>,
     (width, height): (u32, u32),
     path: &std::path::Path,
-) -> anyhow::Result<()> {
+) -> Result<(), Failure> {
+    let run_error = |e: anyhow::Error| Failure::Run(e);
     let mut system = match render {
         Some(system) => system,
-        None => RenderSystem::new_headless(RenderSystem::offscreen_settings())?,
+        None => RenderSystem::new_headless(RenderSystem::offscreen_settings())
+            .map_err(|e| run_error(e.into()))?,
     };
-    let image = host.render_image(&mut system, width, height)?;
-    save_png(&image, path)?;
+    let image = host
+        .render_image(&mut system, width, height)
+        .map_err(|e| match e {
+            ScreenshotError::TooLarge { .. } => Failure::Start(e.into()),
+            other => run_error(other.into()),
+        })?;
+    save_png(&image, path).map_err(|e| run_error(e.into()))?;
     tracing::info!(path = %path.display(), width, height, "screenshot saved");
     Ok(())
 }

@@ -1,0 +1,384 @@
+//! What a plugin or a file does must not take the host down silently or lose a user's work:
+//! panics in a plugin's `Drop` and in its state methods, a flood of events, impossible
+//! input, zero quaternions, saves over what is not a plain file, screenshots the GPU cannot
+//! draw, and the loader's housekeeping. Real cdylibs (`tests/fixtures/faulty`) and the
+//! `onyx` binary.
+
+use std::path::Path;
+use std::process::{Command, Output};
+
+use onyx_plugin_api::glam::Quat;
+use onyx_plugin_api::{CtxError, InputEvent, Name, Plugin, Transform};
+use onyx_runtime::plugins::Stage;
+use onyx_runtime::{HeadlessHost, HostConfig, PluginLoadError, PluginStatus};
+use onyx_tests::{onyx_binary, plugin_library, target_dir};
+
+const FAULTY: &str = "fixture_faulty";
+
+fn faulty_host(settings: &[(&str, &str)]) -> HeadlessHost {
+    let mut config = HostConfig::default();
+    for (key, value) in settings {
+        config = config.setting(FAULTY, *key, *value);
+    }
+    let mut host = HeadlessHost::with_config(config);
+    host.load_plugin_file(&plugin_library("fixture-faulty"))
+        .expect("the fixture loads");
+    host.load_plugin_file(&plugin_library("hello"))
+        .expect("hello loads");
+    host.step(2);
+    host
+}
+
+fn onyx(args: &[&str]) -> Output {
+    Command::new(onyx_binary())
+        .args(args)
+        .env("ONYX_PLUGIN_PATH", target_dir())
+        .env("RUST_LOG", "warn")
+        .output()
+        .expect("onyx runs")
+}
+
+fn onyx_lines(out: &Output) -> Vec<String> {
+    String::from_utf8_lossy(&out.stderr)
+        .lines()
+        .filter(|l| l.starts_with("onyx:"))
+        .map(str::to_owned)
+        .collect()
+}
+
+#[test]
+fn a_panic_in_a_plugins_drop_is_caught_and_named_and_the_host_goes_on() {
+    // Unloaded mid-run.
+    let mut host = faulty_host(&[("panic_in", "drop")]);
+    assert!(host.host_mut().unload_plugin(FAULTY));
+    let incidents = host.host().incidents().to_vec();
+    assert_eq!(incidents.len(), 1, "{incidents:?}");
+    assert!(
+        incidents[0].contains(FAULTY)
+            && incidents[0].contains("drop")
+            && incidents[0].contains("fixture_faulty panics in drop as configured"),
+        "{}",
+        incidents[0]
+    );
+    assert_eq!(host.step(3), 3, "the host goes on");
+    assert_eq!(host.plugin_status("hello"), Some(&PluginStatus::Running));
+
+    // Replaced by a new build: the old build's drop panics, the new build runs.
+    let mut host = faulty_host(&[("panic_in", "drop")]);
+    host.host_mut()
+        .reload_plugin(FAULTY)
+        .expect("the reload itself succeeds");
+    assert_eq!(host.plugin_status(FAULTY), Some(&PluginStatus::Running));
+    assert!(host.host().incidents()[0].contains("previous build"));
+    host.step(2);
+
+    // At the end of a run: exit 1, one `onyx:` line naming the plugin, the dump written.
+    let dir = tempfile::tempdir().unwrap();
+    let dump = dir.path().join("dump.json");
+    let out = onyx(&[
+        "run",
+        "--headless",
+        "--frames",
+        "3",
+        "--plugin",
+        FAULTY,
+        "--set",
+        "fixture_faulty.panic_in=drop",
+        "--dump-state",
+        dump.to_str().unwrap(),
+    ]);
+    assert_eq!(
+        out.status.code(),
+        Some(1),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let lines = onyx_lines(&out);
+    assert!(
+        lines
+            .iter()
+            .any(|l| l.contains("plugin `fixture_faulty` faulted in drop")),
+        "{lines:?}"
+    );
+    assert!(dump.is_file(), "the dump is still written");
+}
+
+#[test]
+fn a_panic_in_save_state_or_load_state_faults_the_plugin_keeps_the_old_build_and_exits_1() {
+    for stage in [Stage::SaveState, Stage::LoadState] {
+        let mut host = faulty_host(&[("panic_in", stage.as_str())]);
+        let error = host.host_mut().reload_plugin(FAULTY).unwrap_err();
+        assert!(error.to_string().contains(stage.as_str()), "{error}");
+        match host.plugin_status(FAULTY) {
+            Some(PluginStatus::Faulted { stage: s, message }) => {
+                assert_eq!(*s, stage);
+                assert!(message.contains("as configured"), "{message}");
+            }
+            other => panic!("{stage}: expected a fault, got {other:?}"),
+        }
+        assert_eq!(
+            host.host().plugin(FAULTY).map(|p| p.reloads()),
+            Some(0),
+            "the old build stays in place"
+        );
+        assert_eq!(host.step(3), 3);
+    }
+    // Reached through `onyx run`: the plugin asks for its own reload.
+    let out = onyx(&[
+        "run",
+        "--headless",
+        "--frames",
+        "5",
+        "--plugin",
+        FAULTY,
+        "--set",
+        "fixture_faulty.panic_in=save_state",
+        "--set",
+        "fixture_faulty.reload_self_at=2",
+    ]);
+    assert_eq!(
+        out.status.code(),
+        Some(1),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let lines = onyx_lines(&out);
+    assert!(
+        lines.iter().any(|l| l.contains("faulted in save_state")),
+        "{lines:?}"
+    );
+}
+
+#[test]
+fn a_plugin_that_floods_the_event_queue_is_faulted_and_the_queue_stays_bounded() {
+    let mut host = faulty_host(&[("flood", "1")]);
+    host.step(30);
+    match host.plugin_status(FAULTY) {
+        Some(PluginStatus::Faulted { message, .. }) => assert!(
+            message.contains("custom events in one frame")
+                && message.contains("max_events_per_frame"),
+            "{message}"
+        ),
+        other => panic!("the flooding plugin should be faulted, got {other:?}"),
+    }
+    assert_eq!(host.plugin_status("hello"), Some(&PluginStatus::Running));
+    assert_eq!(host.step(5), 5, "the host goes on");
+}
+
+#[test]
+fn a_zero_quaternion_is_refused_like_nan_from_a_plugin_and_from_a_scene_file() {
+    struct Zero(std::sync::Arc<std::sync::Mutex<Option<Result<(), CtxError>>>>);
+    impl Plugin for Zero {
+        fn on_init(&mut self, ctx: &mut onyx_plugin_api::Ctx) {
+            let zero = Transform::IDENTITY.with_rotation(Quat::from_xyzw(0.0, 0.0, 0.0, 0.0));
+            let answer = ctx.spawn((Name::new("zero"), zero)).map(|_| ());
+            *self.0.lock().unwrap() = Some(answer);
+        }
+    }
+    let answer = std::sync::Arc::new(std::sync::Mutex::new(None));
+    let mut host = HeadlessHost::new();
+    host.add_plugin("zero", Zero(answer.clone())).unwrap();
+    host.step(1);
+    let answer = answer.lock().unwrap().clone().expect("on_init ran");
+    match answer {
+        Err(CtxError::InvalidValue {
+            component, field, ..
+        }) => {
+            assert_eq!(
+                (component.as_str(), field.as_str()),
+                ("Transform", "rotation")
+            );
+        }
+        other => panic!("expected the rotation refused, got {other:?}"),
+    }
+    assert!(host.find::<Name>("zero").is_none());
+
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("zero.ron");
+    std::fs::write(
+        &path,
+        "(version: 2, entities: [(name: Some(\"spinner\"), transform: Some((rotation: (0.0, 0.0, 0.0, 0.0))))])",
+    )
+    .unwrap();
+    let error = HeadlessHost::new()
+        .load_scene(&path)
+        .unwrap_err()
+        .to_string();
+    assert!(
+        error.contains("entity #0 (\"spinner\")") && error.contains("`rotation`"),
+        "{error}"
+    );
+}
+
+#[test]
+fn saving_follows_a_symlink_keeps_a_files_mode_and_refuses_read_only_files_and_devices() {
+    use std::os::unix::fs::PermissionsExt as _;
+    let dir = tempfile::tempdir().unwrap();
+    let real = dir.path().join("real.ron");
+    std::fs::write(&real, "old").unwrap();
+    std::fs::set_permissions(&real, std::fs::Permissions::from_mode(0o640)).unwrap();
+    let link = dir.path().join("link.ron");
+    std::os::unix::fs::symlink(&real, &link).unwrap();
+    let out = onyx(&[
+        "run",
+        "--headless",
+        "--frames",
+        "1",
+        "--save-scene",
+        link.to_str().unwrap(),
+    ]);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    assert!(std::fs::symlink_metadata(&link)
+        .unwrap()
+        .file_type()
+        .is_symlink());
+    assert!(std::fs::read_to_string(&real).unwrap().contains("version"));
+    assert_eq!(
+        std::fs::metadata(&real).unwrap().permissions().mode() & 0o777,
+        0o640
+    );
+
+    let locked = dir.path().join("locked.json");
+    std::fs::write(&locked, "keep").unwrap();
+    std::fs::set_permissions(&locked, std::fs::Permissions::from_mode(0o444)).unwrap();
+    let out = onyx(&[
+        "run",
+        "--headless",
+        "--frames",
+        "1",
+        "--dump-state",
+        locked.to_str().unwrap(),
+    ]);
+    assert_eq!(out.status.code(), Some(1));
+    assert!(
+        onyx_lines(&out).iter().any(|l| l.contains("read-only")),
+        "{:?}",
+        onyx_lines(&out)
+    );
+    assert_eq!(std::fs::read_to_string(&locked).unwrap(), "keep");
+
+    let out = onyx(&[
+        "run",
+        "--headless",
+        "--frames",
+        "1",
+        "--save-scene",
+        "/dev/null",
+    ]);
+    assert_eq!(out.status.code(), Some(1));
+    assert!(
+        onyx_lines(&out).iter().any(|l| l.contains("a device")),
+        "{:?}",
+        onyx_lines(&out)
+    );
+    assert!(
+        std::fs::metadata("/dev/null").unwrap().permissions().mode() & 0o666 == 0o666,
+        "/dev/null is still the device"
+    );
+}
+
+#[test]
+fn a_screenshot_larger_than_the_gpu_can_draw_is_refused_with_exit_2() {
+    let dir = tempfile::tempdir().unwrap();
+    let png = dir.path().join("huge.png");
+    let out = onyx(&[
+        "run",
+        "--headless",
+        "--frames",
+        "1",
+        "--size",
+        "40000x40000",
+        "--screenshot",
+        png.to_str().unwrap(),
+    ]);
+    assert_eq!(
+        out.status.code(),
+        Some(2),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let lines = onyx_lines(&out);
+    assert!(
+        lines.iter().any(|l| l.contains("larger than this GPU")),
+        "{lines:?}"
+    );
+    assert!(!png.exists(), "no empty image was written");
+}
+
+#[test]
+fn a_scroll_of_minus_f32_max_does_not_reach_a_plugins_ui() {
+    let dir = tempfile::tempdir().unwrap();
+    let config = HostConfig::default().setting(
+        "editor",
+        "layout",
+        dir.path().join("layout.json").display().to_string(),
+    );
+    let mut host = HeadlessHost::with_config(config);
+    host.load_plugin_file(&plugin_library("editor")).unwrap();
+    host.step(3);
+    host.pointer_move(onyx_plugin_api::egui::pos2(600.0, 300.0));
+    for event in [
+        InputEvent::Scroll {
+            dx: 0.0,
+            dy: -f32::MAX,
+        },
+        InputEvent::Scroll {
+            dx: f32::NAN,
+            dy: 1.0,
+        },
+        InputEvent::CursorMoved {
+            x: f32::INFINITY,
+            y: 0.0,
+        },
+        InputEvent::MouseMotion {
+            dx: f32::MAX,
+            dy: -f32::MAX,
+        },
+    ] {
+        host.inject(event);
+        host.step(2);
+    }
+    assert_eq!(host.plugin_status("editor"), Some(&PluginStatus::Running));
+}
+
+#[test]
+fn a_directory_given_as_a_plugin_is_named_as_one_and_copies_are_not_left_behind() {
+    let dir = tempfile::tempdir().unwrap();
+    let mut host = HeadlessHost::new();
+    let error = host.load_plugin_file(dir.path()).unwrap_err();
+    assert!(
+        matches!(error, PluginLoadError::NotAFile { .. }),
+        "{error:?}"
+    );
+    assert!(error.to_string().contains("is a directory"), "{error}");
+
+    // A copy folder of a process that is gone is removed by the next process that loads, and
+    // that process leaves none of its own.
+    let stale = std::env::temp_dir().join(format!("onyx-plugins-{}", u32::MAX - 7));
+    std::fs::create_dir_all(&stale).unwrap();
+    std::fs::write(stale.join("0-libold.so"), b"old").unwrap();
+    let child = Command::new(onyx_binary())
+        .args(["run", "--headless", "--frames", "1", "--plugin", "hello"])
+        .env("ONYX_PLUGIN_PATH", target_dir())
+        .env("RUST_LOG", "warn")
+        .stderr(std::process::Stdio::piped())
+        .spawn()
+        .expect("onyx runs");
+    let pid = child.id();
+    let out = child.wait_with_output().unwrap();
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    assert!(
+        !Path::new(&stale).exists(),
+        "the stale folder is still there"
+    );
+    let own = std::env::temp_dir().join(format!("onyx-plugins-{pid}"));
+    assert!(!own.exists(), "{} is left behind", own.display());
+}
