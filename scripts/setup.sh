@@ -1,12 +1,14 @@
 #!/usr/bin/env bash
 # Installs what Onyx needs on Debian/Ubuntu, once: the system packages winit loads at run
 # time (X11), Xvfb for a window without a display, and Mesa's CPU Vulkan driver (lavapipe)
-# for rendering without a GPU. Sourced by scripts/test.sh and scripts/run.sh.
+# for rendering without a GPU; x11-utils (xwininfo) lets the tests read window titles.
+# Sourced by scripts/test.sh and scripts/run.sh.
 set -euo pipefail
 
 ONYX_PACKAGES=(
   mesa-vulkan-drivers libvulkan1 libgl1-mesa-dri libegl1
   xvfb xauth libx11-xcb1 libxcursor1 libxi6 libxrandr2 libxkbcommon-x11-0
+  x11-utils
 )
 
 onyx_missing_packages() {

@@ -13,6 +13,8 @@ use crate::plugins::{
 use crate::scene::{self, SceneError};
 use crate::state::HostState;
 use crate::state_dump::dump_state;
+use crate::watchdog::plugin_call::PluginCall;
+use crate::watchdog::CallTag;
 use crate::HostConfig;
 
 /// What one frame did.
@@ -90,7 +92,11 @@ impl Host {
         if self.plugin(&name).is_some() {
             return Err(self.report(PluginLoadError::AlreadyLoaded { plugin: name }));
         }
-        let instance = library.instantiate().map_err(|e| {
+        let constructed = {
+            let _call = PluginCall::enter(CallTag::plugin(&name), Stage::Construct);
+            library.instantiate()
+        };
+        let instance = constructed.map_err(|e| {
             self.report(PluginLoadError::ConstructorFailed {
                 plugin: name.clone(),
                 message: e.to_string(),
@@ -149,6 +155,7 @@ impl Host {
             .collect();
         let mut slot = PluginSlot {
             name: name.clone(),
+            tag: crate::watchdog::CallTag::plugin(&name),
             origin,
             instance,
             status: PluginStatus::Running,
@@ -162,6 +169,7 @@ impl Host {
         };
         let attached = {
             let state = &mut self.state;
+            let _call = PluginCall::enter(slot.tag, Stage::Attach);
             let mut cx = crate::services::CallContext::new(state, &name);
             slot.instance.on_attach(&mut cx, &info)
         };

@@ -11,6 +11,8 @@ use crate::plugins::{
     open_library, LibraryWatcher, PluginOrigin, PluginStatus, ReloadError, Stage,
 };
 use crate::services::CallContext;
+use crate::watchdog::plugin_call::PluginCall;
+use crate::watchdog::CallTag;
 use crate::Host;
 
 fn message(error: &CallError) -> String {
@@ -23,7 +25,11 @@ fn message(error: &CallError) -> String {
 /// Drops a new build that will not be used, inside its own image; the sentence reporting a
 /// panic in its `Drop`, if any.
 fn discard(new: &mut onyx_plugin_api::host::PluginInstance, name: &str) -> Option<String> {
-    let error = new.dispose().err()?;
+    let disposed = {
+        let _call = PluginCall::enter(CallTag::plugin(name), Stage::Drop);
+        new.dispose()
+    };
+    let error = disposed.err()?;
     let incident = format!(
         "the new build of plugin `{name}` failed while being dropped after a failed reload ({})",
         message(&error)
@@ -179,9 +185,11 @@ impl Host {
                 path,
             });
         }
-        let mut new = library
-            .instantiate()
-            .map_err(|e| step("constructor", "new", &e))?;
+        let constructed = {
+            let _call = PluginCall::enter(CallTag::plugin(name), Stage::Construct);
+            library.instantiate()
+        };
+        let mut new = constructed.map_err(|e| step("constructor", "new", &e))?;
 
         // 2. Carry the state over (a faulted plugin's state is not trusted: start fresh). A
         //    panic on either side faults the plugin: the old build stays in place, not called
@@ -189,14 +197,16 @@ impl Host {
         let slot = &mut self.plugins[index];
         let was_running = !slot.status.is_faulted();
         if was_running {
-            let carried = slot
-                .instance
-                .save_state()
-                .map_err(|e| (Stage::SaveState, "old", e));
+            let carried = {
+                let _call = PluginCall::enter(slot.tag, Stage::SaveState);
+                slot.instance.save_state()
+            }
+            .map_err(|e| (Stage::SaveState, "old", e));
             let carried = carried.and_then(|state| {
                 if state.is_empty() {
                     Ok(())
                 } else {
+                    let _call = PluginCall::enter(slot.tag, Stage::LoadState);
                     new.load_state(&state)
                         .map_err(|e| (Stage::LoadState, "new", e))
                 }
@@ -224,6 +234,7 @@ impl Host {
         // from an older API, must not be asked to run the old build's scripts).
         self.state.tools.scripts.remove_plugin(&slot.name);
         let attached = {
+            let _call = PluginCall::enter(slot.tag, Stage::Attach);
             let mut cx = CallContext::new(&mut self.state, &slot.name);
             new.on_attach(&mut cx, &info)
         };
@@ -234,6 +245,7 @@ impl Host {
             if was_running {
                 // Put the old build back, told it is being re-attached.
                 let revived = {
+                    let _call = PluginCall::enter(slot.tag, Stage::Attach);
                     let mut cx = CallContext::new(&mut self.state, &slot.name);
                     slot.instance.on_attach(&mut cx, &info)
                 };
@@ -248,7 +260,11 @@ impl Host {
         // The old plugin object is dropped here, inside its own image (which stays mapped).
         let mut old = std::mem::replace(&mut slot.instance, new);
         slot.status = PluginStatus::Running;
-        if let Err(error) = old.dispose() {
+        let disposed = {
+            let _call = PluginCall::enter(slot.tag, Stage::Drop);
+            old.dispose()
+        };
+        if let Err(error) = disposed {
             let incident = format!(
                 "the previous build of plugin `{name}` failed while being dropped after a \
                  reload ({}); the new build runs",

@@ -31,6 +31,8 @@
 //! - `assets/`: mesh and texture ids ↔ files; `fs/`: atomic writes and file watching.
 //! - `gui/`: plugin GUIs — egui input in, meshes and textures out, painted over the scene.
 //! - `window/`: the winit window and input mapping.
+//! - `watchdog/`: which plugin call each thread is in; the watchdog thread for calls that do
+//!   not return; the crash report for native failures.
 //! - Tool services (the editor's): `console/` (log ring buffer + tracing layer),
 //!   `diagnostics/` (frame and per-plugin timings), `play_mode/` (edit/play/pause/stop with a
 //!   world snapshot), `scripts/` (registered behaviours run per entity), `tools/` (what they
@@ -66,6 +68,7 @@ pub(crate) mod stage;
 pub(crate) mod state;
 pub(crate) mod state_dump;
 pub(crate) mod tools;
+pub mod watchdog;
 pub mod window;
 pub mod world;
 

@@ -2,7 +2,10 @@
 
 /// A plugin lifecycle method.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+#[repr(u8)]
 pub enum Stage {
+    /// Opening the library (the system loader, and any static initialisers it runs).
+    Load,
     /// Building the plugin object.
     Construct,
     /// `on_attach`.
@@ -37,6 +40,7 @@ impl Stage {
     /// The method's name as a plugin author wrote it.
     pub fn as_str(self) -> &'static str {
         match self {
+            Stage::Load => "loading",
             Stage::Construct => "constructor",
             Stage::Attach => "on_attach",
             Stage::Init => "on_init",
@@ -54,6 +58,30 @@ impl Stage {
         }
     }
 
+    /// Every stage, in declaration order (`ALL[stage as usize] == stage`).
+    pub const ALL: [Stage; 15] = [
+        Stage::Load,
+        Stage::Construct,
+        Stage::Attach,
+        Stage::Init,
+        Stage::Event,
+        Stage::FixedUpdate,
+        Stage::Update,
+        Stage::Render,
+        Stage::DrawGui,
+        Stage::Resize,
+        Stage::Detach,
+        Stage::SaveState,
+        Stage::LoadState,
+        Stage::Script,
+        Stage::Drop,
+    ];
+
+    /// The stage numbered `index` (its `as u8`).
+    pub fn from_index(index: u8) -> Option<Stage> {
+        Self::ALL.get(usize::from(index)).copied()
+    }
+
     /// The methods the diagnostics time, in frame order.
     pub const ALL_TIMED: [Stage; 9] = [
         Stage::Event,
@@ -66,6 +94,14 @@ impl Stage {
         Stage::Init,
         Stage::Attach,
     ];
+}
+
+#[cfg(test)]
+#[test]
+fn stages_round_trip_through_their_index() {
+    for stage in Stage::ALL {
+        assert_eq!(Stage::from_index(stage as u8), Some(stage));
+    }
 }
 
 impl std::fmt::Display for Stage {

@@ -385,6 +385,49 @@ fn dev_rebuilds_and_hot_reloads_a_scaffolded_plugin_on_save() {
         "{}",
         dev.stderr_tail()
     );
+
+    // A build that crashes the host natively (it aborts as the loader opens it): the host
+    // says which library, `onyx dev` keeps watching, and the next good build runs.
+    const CRASH_ON_LOAD: &str = "
+#[used]
+#[link_section = \".init_array\"]
+static CRASH_ON_LOAD: extern \"C\" fn() = {
+    extern \"C\" fn crash() {
+        std::process::abort()
+    }
+    crash
+};
+";
+    edit(
+        &lib_rs,
+        "pub const SPEED: f32 = \"fast\";",
+        &format!("pub const SPEED: f32 = 2.5;{CRASH_ON_LOAD}"),
+    );
+    let (c, line) = dev.wait_for("the crash line", f, Duration::from_secs(300), |l| {
+        l.starts_with("onyx: native crash: SIGABRT")
+    });
+    assert!(
+        line.contains("in the library `") && line.contains("(loading)"),
+        "{line}"
+    );
+    let (w, _) = dev.wait_for("onyx dev still watching", c, Duration::from_secs(10), |l| {
+        l.contains("the host stopped (exit status 3)") && l.contains("still watching")
+    });
+    assert!(
+        dev.child.try_wait().unwrap().is_none(),
+        "onyx dev outlives the host"
+    );
+    edit(
+        &lib_rs,
+        &format!("pub const SPEED: f32 = 2.5;{CRASH_ON_LOAD}"),
+        "pub const SPEED: f32 = 4.0;",
+    );
+    let (s, _) = dev.wait_for("the host started again", w, Duration::from_secs(300), |l| {
+        l.contains("starting the host again")
+    });
+    dev.wait_for("the fixed build running", s, Duration::from_secs(30), |l| {
+        progress(l).is_some_and(|(_, _, speed)| speed == 4.0)
+    });
     assert!(
         dev.child.try_wait().unwrap().is_none(),
         "onyx dev is still running"
@@ -392,6 +435,11 @@ fn dev_rebuilds_and_hot_reloads_a_scaffolded_plugin_on_save() {
     drop(dev);
 
     // A first build that fails: exit 2 with one line, after the compiler's errors.
+    edit(
+        &lib_rs,
+        "pub const SPEED: f32 = 4.0;",
+        "pub const SPEED: f32 = \"fast\";",
+    );
     let dev_once = |frames: &str| {
         Command::new(onyx_binary())
             .args(["dev", "--headless", "--frames", frames, "--plugin-crate"])

@@ -12,6 +12,7 @@ mod hierarchy;
 mod host_services;
 mod lifecycle;
 mod loading;
+mod native_failures;
 mod physics;
 mod physics_scenes;
 mod registry;

@@ -6,7 +6,9 @@ use std::sync::atomic::{AtomicU64, Ordering};
 use onyx_plugin_api::host::{LibraryError, PluginLibrary, API_VERSION};
 
 use super::plugin_search::name_from_path;
-use super::PluginLoadError;
+use super::{PluginLoadError, Stage};
+use crate::watchdog::plugin_call::PluginCall;
+use crate::watchdog::CallTag;
 
 /// Copies `path` to a unique path and opens the copy.
 ///
@@ -50,7 +52,11 @@ pub fn open_library(path: &Path) -> Result<(PluginLibrary, PathBuf), PluginLoadE
             actual,
         });
     }
-    let opened = PluginLibrary::open(&copy);
+    // The system loader maps it and runs its initialisers: a crash in there names the file.
+    let opened = {
+        let _call = PluginCall::enter(CallTag::library(path), Stage::Load);
+        PluginLibrary::open(&copy)
+    };
     if cfg!(unix) {
         let _ = std::fs::remove_file(&copy);
         // Empty again on Unix (the mapping outlives the file): nothing is left behind.

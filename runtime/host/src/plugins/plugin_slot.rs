@@ -8,6 +8,8 @@ use onyx_plugin_api::{Event, PlatformEvent};
 use super::{PluginStatus, Stage};
 use crate::services::CallContext;
 use crate::state::HostState;
+use crate::watchdog::plugin_call::PluginCall;
+use crate::watchdog::CallTag;
 
 /// Where a plugin came from.
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -26,6 +28,8 @@ pub enum PluginOrigin {
 /// A plugin the host calls each frame, until it faults.
 pub struct PluginSlot {
     pub(crate) name: String,
+    /// What the watchdog and the crash report call it.
+    pub(crate) tag: &'static CallTag,
     pub(crate) origin: PluginOrigin,
     pub(crate) instance: PluginInstance,
     pub(crate) status: PluginStatus,
@@ -69,6 +73,7 @@ impl PluginSlot {
         }
         let start = std::time::Instant::now();
         let result = {
+            let _call = PluginCall::enter(self.tag, stage);
             let mut cx = CallContext::new(state, &self.name);
             f(&mut self.instance, &mut cx)
         };
@@ -98,7 +103,11 @@ impl PluginSlot {
     /// Drops the plugin object (inside its own image); a panic in its `Drop` faults the slot
     /// (stage `drop`) and is returned as the sentence that reports it.
     pub(crate) fn dispose(&mut self, state: &mut HostState) -> Option<String> {
-        let error = self.instance.dispose().err()?;
+        let disposed = {
+            let _call = PluginCall::enter(self.tag, Stage::Drop);
+            self.instance.dispose()
+        };
+        let error = disposed.err()?;
         self.fault(state, Stage::Drop, &error);
         match &self.status {
             PluginStatus::Faulted { message, .. } => {

@@ -116,14 +116,29 @@ pub fn run_windowed(
         next_frame: Instant::now(),
         summary: WindowedSummary::default(),
     };
-    event_loop
-        .run_app(&mut app)
-        .map_err(WindowError::EventLoop)?;
+    let ran = event_loop.run_app(&mut app);
+    // The title sink holds the window: let both go.
+    crate::watchdog::set_stuck_sink(None);
+    ran.map_err(WindowError::EventLoop)?;
     app.summary.render = app.graphics.take().map(|g| g.system);
     match app.error {
         Some(error) => Err(error),
         None => Ok(app.summary),
     }
+}
+
+/// While the watchdog reports a stuck plugin call, the title says so (the window cannot
+/// repaint then). Not on macOS, where a title is set on the main thread — the stuck one.
+fn show_stuck_calls_in_title(window: &Arc<Window>, title: &str) {
+    if cfg!(target_os = "macos") {
+        return;
+    }
+    let window = window.clone();
+    let title = title.to_owned();
+    crate::watchdog::set_stuck_sink(Some(Arc::new(move |stuck: Option<&str>| match stuck {
+        Some(sentence) => window.set_title(&format!("{title} (not responding: {sentence})")),
+        None => window.set_title(&title),
+    })));
 }
 
 impl App<'_> {
@@ -191,6 +206,7 @@ impl ApplicationHandler for App<'_> {
                     height: size.height,
                 });
                 self.gui = Some(super::WindowGui::new(&window));
+                show_stuck_calls_in_title(&window, &self.options.title);
                 self.window = Some(window);
                 self.next_frame = Instant::now();
             }

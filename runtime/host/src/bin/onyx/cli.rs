@@ -24,6 +24,10 @@ pub enum Command {
     NewPlugin(NewPluginArgs),
     /// Build plugin crates, run them, and rebuild + hot-reload them as their sources change.
     Dev(DevArgs),
+    /// The host process `onyx dev` runs and watches (not for people: `onyx dev` passes it
+    /// its own arguments and the libraries it built).
+    #[command(name = "dev-host", hide = true)]
+    DevHost(DevHostArgs),
 }
 
 /// `onyx run`.
@@ -39,7 +43,13 @@ PLUGINS
 
 EXIT STATUS
   0 on a clean run; 1 if a plugin faulted during the run; 2 if the run could not start
-  (a plugin or scene failed to load, no display). The reason is printed on one line.")]
+  (a plugin or scene failed to load, no display); 3 if the process crashed natively (a
+  segfault, an abort, a stack overflow); 4 if a plugin ended the process itself (`exit`)
+  during a call. The reason is printed on one line, for 3 and 4 naming the plugin and the
+  stage that was running (or the host).
+
+A plugin call still running after --watchdog seconds is reported (log, window title) but
+not stopped: native code cannot be interrupted safely.")]
 pub struct RunArgs {
     /// What to run and how (shared with `onyx dev`).
     #[command(flatten)]
@@ -90,6 +100,10 @@ pub struct HostArgs {
     /// Present frames as soon as they are drawn instead of waiting for the display's refresh.
     #[arg(long)]
     pub no_vsync: bool,
+    /// Report a plugin call still running after SECS seconds, and every 10 s while it lasts
+    /// (0: off; it is quiet anyway while a debugger is attached).
+    #[arg(long, value_name = "SECS", default_value_t = 5.0, value_parser = parse_seconds)]
+    pub watchdog: f64,
 }
 
 /// `onyx new-plugin`.
@@ -126,10 +140,15 @@ THE DEV LOOP
   prints the compiler's errors; the previous build keeps running. Builds honour
   CARGO_TARGET_DIR and the crate's own cargo configuration.
 
+  The host runs in a process of its own. If it crashes (a segfault, an abort, a plugin
+  calling exit: its one `onyx:` line says which plugin and stage), `onyx dev` says so and
+  keeps watching: the next good build starts the host again.
+
 EXIT STATUS
   0 when the run ends (window closed, a plugin quit, --frames reached); 1 if a plugin is
   faulted at the end; 2 if it could not start (a first build failed, a crate has no cdylib,
-  a plugin or scene failed to load, no display). The reason is printed on one line.")]
+  a plugin or scene failed to load, no display). The reason is printed on one line.
+  3 and 4 are as for `onyx run` (a native crash; a plugin called `exit`).")]
 pub struct DevArgs {
     /// A plugin crate's directory (repeatable): built, loaded, rebuilt and reloaded on change.
     #[arg(long = "plugin-crate", value_name = "DIR", required = true)]
@@ -138,6 +157,17 @@ pub struct DevArgs {
     /// when their file changes, but not built).
     #[command(flatten)]
     pub host: HostArgs,
+}
+
+/// `onyx dev-host`: `onyx dev`'s arguments, and the libraries its first builds made.
+#[derive(Args, Debug)]
+pub struct DevHostArgs {
+    /// A plugin library built by `onyx dev` (repeatable; loaded first, in order).
+    #[arg(long = "library", value_name = "PATH")]
+    pub libraries: Vec<PathBuf>,
+    /// The arguments `onyx dev` was given.
+    #[command(flatten)]
+    pub dev: DevArgs,
 }
 
 fn parse_setting(text: &str) -> Result<(String, String, String), String> {
@@ -151,6 +181,14 @@ fn parse_setting(text: &str) -> Result<(String, String, String), String> {
         return Err(format!("`{text}`: plugin and key must not be empty"));
     }
     Ok((plugin.to_owned(), key.to_owned(), value.to_owned()))
+}
+
+fn parse_seconds(text: &str) -> Result<f64, String> {
+    let seconds: f64 = text.parse().map_err(|e| format!("`{text}`: {e}"))?;
+    if !seconds.is_finite() || seconds < 0.0 {
+        return Err(format!("`{text}` is not a number of seconds (0 or more)"));
+    }
+    Ok(seconds)
 }
 
 fn parse_size(text: &str) -> Result<(u32, u32), String> {
@@ -184,5 +222,7 @@ mod tests {
         assert!(parse_setting("hello=3").unwrap_err().contains("PLUGIN.KEY"));
         assert_eq!(parse_size("640x480").unwrap(), (640, 480));
         assert!(parse_size("640").is_err() && parse_size("0x5").is_err());
+        assert_eq!(parse_seconds("2.5").unwrap(), 2.5);
+        assert!(parse_seconds("-1").is_err() && parse_seconds("inf").is_err());
     }
 }

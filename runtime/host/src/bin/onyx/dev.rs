@@ -1,18 +1,23 @@
 //! `onyx dev --plugin-crate DIR...`: build plugin crates, run them, rebuild them in the
 //! background when their sources change; the host hot-reloads each rebuilt library.
 //!
-//! Threads: the main thread runs frames (windowed or headless in real time) and never waits
-//! for a build. A notify watcher feeds one coordinator thread, which debounces changes per
-//! crate and wakes that crate's builder thread. Each builder runs one `cargo build` at a
-//! time and, if changes came in meanwhile, another after it. The host's own library watcher
-//! notices the rewritten cdylib, waits until it is complete, and reloads the plugin at the
-//! start of a frame, keeping the old build when the new one cannot load.
+//! Processes: `onyx dev` builds and watches; the host runs in a child process
+//! (`onyx dev-host`, with the same arguments and the built libraries), so a native crash in a
+//! plugin ends only the child: `onyx dev` reports it and starts a new host after the next
+//! good build.
+//!
+//! Threads of `onyx dev`: a notify watcher feeds one coordinator thread, which debounces
+//! changes per crate and wakes that crate's builder thread. Each builder runs one
+//! `cargo build` at a time and, if changes came in meanwhile, another after it. The main
+//! thread waits for the host process. In the host, the library watcher notices the rewritten
+//! cdylib, waits until it is complete, and reloads the plugin at the start of a frame, keeping
+//! the old build when the new one cannot load; frames never wait for a build.
 
 use std::collections::HashMap;
 use std::ffi::OsString;
 use std::io::{BufRead, BufReader};
 use std::path::{Path, PathBuf};
-use std::process::{Child, Command, Stdio};
+use std::process::{Child, Command, ExitStatus, Stdio};
 use std::sync::mpsc::{channel, Receiver, RecvTimeoutError, Sender};
 use std::sync::{Arc, Mutex};
 use std::time::{Duration, Instant};
@@ -22,7 +27,7 @@ use notify::{RecursiveMode, Watcher};
 use onyx_runtime::window::run_windowed;
 use onyx_runtime::Host;
 
-use crate::cli::DevArgs;
+use crate::cli::{DevArgs, DevHostArgs};
 use crate::Failure;
 
 /// How long sources must be left alone before a rebuild starts (editors write in bursts).
@@ -190,13 +195,14 @@ struct Builder {
 }
 
 impl Builder {
-    fn spawn(krate: PluginCrate, library: PathBuf) -> Self {
+    /// Starts the builder; it sends on `built` after each good build.
+    fn spawn(krate: PluginCrate, library: PathBuf, built: Sender<()>) -> Self {
         let (wake, woken) = channel::<()>();
         let slot = Arc::new(Mutex::new(BuildSlot::default()));
         let shared = slot.clone();
         std::thread::Builder::new()
             .name(format!("build {}", krate.label))
-            .spawn(move || build_loop(&krate, &library, &woken, &shared))
+            .spawn(move || build_loop(&krate, &library, &woken, &shared, &built))
             .expect("can start a builder thread");
         Self { wake, slot }
     }
@@ -211,7 +217,13 @@ impl Builder {
     }
 }
 
-fn build_loop(krate: &PluginCrate, library: &Path, woken: &Receiver<()>, slot: &Mutex<BuildSlot>) {
+fn build_loop(
+    krate: &PluginCrate,
+    library: &Path,
+    woken: &Receiver<()>,
+    slot: &Mutex<BuildSlot>,
+    built_ok: &Sender<()>,
+) {
     while woken.recv().is_ok() {
         while woken.try_recv().is_ok() {} // changes queued up before now: one build covers them
         tracing::info!(plugin_crate = %krate.label, "sources changed; rebuilding");
@@ -243,6 +255,7 @@ fn build_loop(krate: &PluginCrate, library: &Path, woken: &Receiver<()>, slot: &
                         library.display()
                     );
                 }
+                let _ = built_ok.send(());
             }
             Ok(Built { library: None, .. }) => tracing::error!(
                 plugin_crate = %krate.label,
@@ -345,18 +358,13 @@ pub fn dev(args: DevArgs) -> Result<(), Failure> {
         crates.push(krate);
     }
 
-    // 2. The host, as `onyx run` sets it up, with hot reload on.
-    let mut host = crate::start_host(&args.host, &libraries)?;
-    host.set_hot_reload(true)
-        .context("cannot watch the plugin libraries")
-        .map_err(Failure::Start)?;
-
-    // 3. Watch the sources; a builder per crate.
+    // 2. Watch the sources; a builder per crate.
     let (watcher, events) = watch(&crates).map_err(Failure::Start)?;
+    let (built_ok, good_builds) = channel();
     let mut builders = Vec::new();
     let mut wakers = Vec::new();
-    for (krate, library) in crates.into_iter().zip(libraries) {
-        let builder = Builder::spawn(krate.clone(), library);
+    for (krate, library) in crates.into_iter().zip(libraries.iter().cloned()) {
+        let builder = Builder::spawn(krate.clone(), library, built_ok.clone());
         wakers.push((krate, builder.wake.clone()));
         builders.push(builder);
     }
@@ -366,23 +374,95 @@ pub fn dev(args: DevArgs) -> Result<(), Failure> {
         .expect("can start the watcher thread");
     tracing::info!("watching the plugin sources; save a change to rebuild and reload");
 
-    // 4. Frames.
-    let result = if args.host.headless {
-        let frames = run_headless(&mut host, args.host.frames);
-        Ok(frames)
-    } else {
-        let options = crate::window_options(&args.host, "Onyx dev");
-        run_windowed(&mut host, options)
-            .map(|summary| summary.frames)
-            .map_err(|e| Failure::Start(anyhow::Error::new(e)))
-    };
+    // 3. The host, in a process of its own, started again after a crash and a good build.
+    let result = supervise(&libraries, &good_builds);
 
-    // 5. Stop watching, stop builds in progress.
+    // 4. Stop watching, stop builds in progress.
     drop(watcher);
     for builder in &builders {
         builder.stop();
     }
-    let frames = result?;
+    result
+}
+
+/// Runs host processes until one ends on its own terms: a clean end (`Ok`), faults at the end
+/// (exit 1, already reported), or a first start that failed (exit 2, already reported). After
+/// a crash — or a failed start of a new build — it waits for the next good build.
+fn supervise(libraries: &[PathBuf], good_builds: &Receiver<()>) -> Result<(), Failure> {
+    let mut first = true;
+    loop {
+        let status = run_host_process(libraries).map_err(Failure::Start)?;
+        match status.code() {
+            Some(0) => return Ok(()),
+            Some(1) => return Err(Failure::Reported(1)),
+            Some(2) if first => return Err(Failure::Reported(2)),
+            _ => {}
+        }
+        first = false;
+        // Builds that finished before the host stopped are the ones it ran (or crashed on).
+        while good_builds.try_recv().is_ok() {}
+        tracing::warn!(
+            "the host stopped ({}); still watching the plugin sources: save a fix and the next \
+             good build starts it again",
+            describe_status(status)
+        );
+        if good_builds.recv().is_err() {
+            return Err(Failure::Reported(3));
+        }
+        tracing::info!("a good build: starting the host again");
+    }
+}
+
+/// Runs `onyx dev-host` with this process's `dev` arguments and `libraries`; its output is
+/// ours.
+fn run_host_process(libraries: &[PathBuf]) -> anyhow::Result<ExitStatus> {
+    let exe =
+        std::env::current_exe().context("cannot find the onyx executable to start the host")?;
+    let mut args: Vec<OsString> = std::env::args_os().collect();
+    let dev_at = 1 + args
+        .iter()
+        .skip(1)
+        .position(|a| a == "dev")
+        .context("`onyx dev` was not started as `onyx dev ...`")?;
+    let dev_args = args.split_off(dev_at + 1);
+    let mut command = Command::new(exe);
+    command.arg("dev-host");
+    for library in libraries {
+        command.arg("--library").arg(library);
+    }
+    command.args(dev_args);
+    let mut child = command.spawn().context("cannot start the host process")?;
+    child.wait().context("cannot wait for the host process")
+}
+
+fn describe_status(status: ExitStatus) -> String {
+    if let Some(code) = status.code() {
+        return format!("exit status {code}");
+    }
+    #[cfg(unix)]
+    {
+        use std::os::unix::process::ExitStatusExt as _;
+        if let Some(signal) = status.signal() {
+            return format!("killed by signal {signal}");
+        }
+    }
+    status.to_string()
+}
+
+/// Runs `onyx dev-host`: the host `onyx dev` watches, with hot reload on.
+pub fn dev_host(args: DevHostArgs) -> Result<(), Failure> {
+    let mut host = crate::start_host(&args.dev.host, &args.libraries)?;
+    host.set_hot_reload(true)
+        .context("cannot watch the plugin libraries")
+        .map_err(Failure::Start)?;
+    let frames = if args.dev.host.headless {
+        run_headless(&mut host, args.dev.host.frames)
+    } else {
+        let options = crate::window_options(&args.dev.host, "Onyx dev");
+        run_windowed(&mut host, options)
+            .map(|summary| summary.frames)
+            .map_err(|e| Failure::Start(anyhow::Error::new(e)))?
+    };
     host.shutdown();
     tracing::info!(frames, ticks = host.time().ticks, "dev run finished");
     crate::check_faults(&host)

@@ -23,6 +23,8 @@ enum Failure {
     Start(anyhow::Error),
     /// The run happened but was not clean (exit 1).
     Run(anyhow::Error),
+    /// A host process ended with this status and said why itself (`onyx dev`).
+    Reported(u8),
 }
 
 fn main() -> ExitCode {
@@ -39,6 +41,9 @@ fn main() -> ExitCode {
             .init();
     }
     let cli = Cli::parse();
+    if matches!(cli.command, Command::Run(_) | Command::DevHost(_)) {
+        onyx_runtime::watchdog::install_crash_report();
+    }
     let result = match cli.command {
         Command::Run(args) => run(args),
         Command::Plugins => {
@@ -47,6 +52,7 @@ fn main() -> ExitCode {
         }
         Command::NewPlugin(args) => new_plugin::new_plugin(args),
         Command::Dev(args) => dev::dev(args),
+        Command::DevHost(args) => dev::dev_host(args),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,
@@ -58,6 +64,7 @@ fn main() -> ExitCode {
             eprintln!("onyx: {e:#}");
             ExitCode::from(1)
         }
+        Err(Failure::Reported(code)) => ExitCode::from(code),
     }
 }
 
@@ -99,6 +106,12 @@ fn check_faults(host: &Host) -> Result<(), Failure> {
 
 /// A host set up as `args` say: `libraries` first, then `--plugin`s in order, then the scene.
 fn start_host(args: &HostArgs, libraries: &[std::path::PathBuf]) -> Result<Host, Failure> {
+    if args.watchdog > 0.0 {
+        onyx_runtime::watchdog::start(onyx_runtime::watchdog::WatchdogSettings {
+            limit: std::time::Duration::from_secs_f64(args.watchdog),
+            ..Default::default()
+        });
+    }
     let mut host = Host::new(host_config(args));
     for library in libraries {
         host.load_plugin_file(library)
