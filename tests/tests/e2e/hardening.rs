@@ -382,3 +382,54 @@ fn a_directory_given_as_a_plugin_is_named_as_one_and_copies_are_not_left_behind(
     let own = std::env::temp_dir().join(format!("onyx-plugins-{pid}"));
     assert!(!own.exists(), "{} is left behind", own.display());
 }
+
+#[test]
+fn the_library_check_passes_every_real_library_it_is_shown() {
+    use onyx_runtime::plugins::library_check::check_library;
+    // Every plugin cdylib of this build, and the system's shared libraries (built by other
+    // toolchains and linkers: the check must not refuse what the loader handles).
+    let mut files: Vec<std::path::PathBuf> = std::fs::read_dir(target_dir())
+        .unwrap()
+        .flatten()
+        .map(|e| e.path())
+        .filter(|p| {
+            p.extension()
+                .is_some_and(|e| e == std::env::consts::DLL_EXTENSION)
+        })
+        .collect();
+    for dir in [
+        "/usr/lib/x86_64-linux-gnu",
+        "/usr/lib/aarch64-linux-gnu",
+        "/lib64",
+    ] {
+        let Ok(entries) = std::fs::read_dir(dir) else {
+            continue;
+        };
+        files.extend(
+            entries
+                .flatten()
+                .map(|e| e.path())
+                .filter(|p| {
+                    p.file_name()
+                        .is_some_and(|n| n.to_string_lossy().contains(".so"))
+                })
+                .filter(|p| std::fs::metadata(p).is_ok_and(|m| m.is_file() && m.len() < 64 << 20)),
+        );
+    }
+    assert!(files.len() > 5, "{files:?}");
+    let mut refused = Vec::new();
+    for file in &files {
+        let bytes = std::fs::read(file).unwrap();
+        if let Err(problem) = check_library(&bytes) {
+            refused.push(format!("{}: {problem}", file.display()));
+        }
+    }
+    eprintln!("{} libraries checked", files.len());
+    assert!(
+        refused.is_empty(),
+        "{} of {} refused:\n{}",
+        refused.len(),
+        files.len(),
+        refused.join("\n")
+    );
+}

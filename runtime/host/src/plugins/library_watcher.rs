@@ -108,8 +108,7 @@ impl LibraryWatcher {
             let Ok(len) = std::fs::metadata(path).map(|m| m.len()) else {
                 continue; // removed for now; a later event will mark it again
             };
-            let complete =
-                file.len == Some(len) || super::library_completeness::is_complete_elf(path);
+            let complete = file.len == Some(len) || super::library_check::is_complete_elf(path);
             if !complete {
                 file.len = Some(len);
                 file.dirty_since = Some(now);

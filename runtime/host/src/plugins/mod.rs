@@ -2,14 +2,15 @@
 //!
 //! - `plugin_search.rs`: [`PluginSearchPath`], NAME → library file.
 //! - `plugin_loader.rs`: [`open_library`], fresh-copy loading.
-//! - `library_completeness.rs`: refuses half-written library files before they are mapped.
+//! - `library_check.rs`: refuses library files that are half-written or damaged where the
+//!   system loader would crash on them, before they are mapped.
 //! - `plugin_load_error.rs`: [`PluginLoadError`], one sentence per failure.
 //! - `plugin_slot.rs`: [`PluginSlot`], a loaded plugin and its fault handling.
 //! - `plugin_status.rs`: running or faulted (in which [`Stage`], `crate::stage`).
 //! - `library_watcher.rs`: [`LibraryWatcher`], notices rebuilt libraries (hot reload).
 //! - `reload_error.rs`: [`ReloadError`], why a new build did not replace the old one.
 
-pub mod library_completeness;
+pub mod library_check;
 pub mod library_watcher;
 mod plugin_load_error;
 mod plugin_loader;

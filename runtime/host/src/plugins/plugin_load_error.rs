@@ -70,6 +70,18 @@ pub enum PluginLoadError {
         /// Bytes it has.
         actual: u64,
     },
+    /// The file's headers or tables are damaged where the system loader would crash on them.
+    #[error(
+        "`{}` is damaged: {problem}; the system loader would crash on it, so it was not \
+         opened. Rebuild it",
+        .path.display()
+    )]
+    Damaged {
+        /// The file.
+        path: PathBuf,
+        /// What is wrong, in words.
+        problem: String,
+    },
     /// A shared library without the Onyx root module.
     #[error(
         "`{}` is a shared library but not an Onyx plugin: it exports no plugin root module. Add \

@@ -5,6 +5,7 @@ use std::sync::atomic::{AtomicU64, Ordering};
 
 use onyx_plugin_api::host::{LibraryError, PluginLibrary, API_VERSION};
 
+use super::library_check::LibraryProblem;
 use super::plugin_search::name_from_path;
 use super::{PluginLoadError, Stage};
 use crate::watchdog::plugin_call::PluginCall;
@@ -43,14 +44,29 @@ pub fn open_library(path: &Path) -> Result<(PluginLibrary, PathBuf), PluginLoadE
         .lock()
         .unwrap_or_else(std::sync::PoisonError::into_inner);
     let copy = fresh_copy(path)?;
-    // Check the copy (the original may still be changing).
-    if let Ok(Some((needed, actual))) = super::library_completeness::truncation(&copy) {
-        let _ = std::fs::remove_file(&copy);
-        return Err(PluginLoadError::Truncated {
+    // Check the copy (the original may still be changing) before the loader trusts it.
+    let checked = match super::library_check::check_library_file(&copy) {
+        Ok(Ok(())) => Ok(()),
+        Ok(Err(LibraryProblem::Truncated { needed, actual })) => Err(PluginLoadError::Truncated {
             path: path.to_path_buf(),
             needed,
             actual,
-        });
+        }),
+        Ok(Err(LibraryProblem::Damaged(problem))) => Err(PluginLoadError::Damaged {
+            path: path.to_path_buf(),
+            problem,
+        }),
+        Err(cause) => Err(PluginLoadError::Copy {
+            path: path.to_path_buf(),
+            cause,
+        }),
+    };
+    if let Err(error) = checked {
+        let _ = std::fs::remove_file(&copy);
+        if let Some(dir) = copy.parent() {
+            let _ = std::fs::remove_dir(dir);
+        }
+        return Err(error);
     }
     // The system loader maps it and runs its initialisers: a crash in there names the file.
     let opened = {

@@ -1,7 +1,7 @@
 //! [`install_crash_report`]: one line naming the plugin and stage when the process dies of a
 //! native failure, and a distinct exit status.
 //!
-//! A segfault, a bus error, an illegal instruction, an abort (a plugin built with
+//! A segfault, a bus error, an illegal instruction, a trap outside a debugger, an abort (a plugin built with
 //! `panic = "abort"`, a failed C assertion, a double panic) or a stack overflow cannot be
 //! caught: the process is going down. The handler writes one line with `write(2)` only —
 //! async-signal-safe, no allocation, no lock — and ends the process with
@@ -108,7 +108,7 @@ mod unix {
 
     use super::{crash_line, current, push_place, Line, EXIT_NATIVE_CRASH, EXIT_PLUGIN_EXITED};
 
-    const SIGNALS: [(libc::c_int, &str); 5] = [
+    const SIGNALS: [(libc::c_int, &str); 6] = [
         (
             libc::SIGSEGV,
             "SIGSEGV (a bad memory access or a stack overflow)",
@@ -124,6 +124,11 @@ mod unix {
              panicking, or a failed native assertion)",
         ),
         (libc::SIGFPE, "SIGFPE (an arithmetic fault)"),
+        (
+            libc::SIGTRAP,
+            "SIGTRAP (a trap instruction outside a debugger: a breakpoint left in, or a failed \
+             runtime check)",
+        ),
     ];
 
     /// Set by the first fatal signal: a second one (the handler's own fault, another thread)

@@ -1,0 +1,201 @@
+//! [`check_library`]: refuses a library file the system's dynamic loader would crash on,
+//! before it maps it.
+//!
+//! The loader (glibc's `ld.so`) trusts what an ELF file says about itself: where its segments
+//! are, where the dynamic section points, how many symbols there are, which version each one
+//! has, where each relocation writes. A file that is cut short, or damaged in one of those
+//! tables, makes it read or write wild addresses inside the host process — a segfault no
+//! handler can recover from, or an assertion that ends the process with status 127. So before
+//! opening a library the host reads those same tables (with the `object` crate) and checks
+//! that every offset, index and address stays inside the file and the library's own memory.
+//!
+//! What it cannot check is the machine code: damage there shows up only when that code runs,
+//! and the crash report then names the plugin and stage. Non-ELF files (macOS, Windows) are
+//! left to their platform's loader.
+//!
+//! - `image.rs`: the segments, and address → file lookups that stay inside them.
+//! - `dynamic.rs`: the dynamic section's entries, its strings, and the tags that go together.
+//! - `symbols.rs`: the hash tables (how many symbols there are) and the version tables.
+//! - `relocations.rs`: every relocation's type, symbol and target; the initialiser arrays.
+
+mod dynamic;
+mod image;
+mod relocations;
+mod symbols;
+
+use std::path::Path;
+
+use object::elf;
+use object::read::elf::{FileHeader as _, ProgramHeader as _};
+use object::Endianness;
+
+use dynamic::check_dynamic;
+use image::{check_segments, dynamic_entries, loads, Image};
+
+pub(super) type Header = elf::FileHeader64<Endianness>;
+
+/// Why a library file would not load safely.
+#[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
+pub enum LibraryProblem {
+    /// The file is shorter than its own headers say (a build caught half-written).
+    #[error("its headers need {needed} bytes but the file has {actual}")]
+    Truncated {
+        /// Bytes the headers require.
+        needed: u64,
+        /// Bytes in the file.
+        actual: u64,
+    },
+    /// A header or table points outside the file or the library's memory, or makes no sense.
+    #[error("{0}")]
+    Damaged(String),
+}
+
+pub(super) fn damaged(what: impl Into<String>) -> LibraryProblem {
+    LibraryProblem::Damaged(what.into())
+}
+
+/// The ELF machine this host runs on, if it checks that.
+pub(super) const HOST_MACHINE: Option<u16> = if cfg!(target_arch = "x86_64") {
+    Some(elf::EM_X86_64)
+} else if cfg!(target_arch = "aarch64") {
+    Some(elf::EM_AARCH64)
+} else {
+    None
+};
+
+/// Checks `path` (see the module docs). `Ok` for a file that is not a 64-bit ELF library: its
+/// platform's loader judges it.
+pub fn check_library_file(path: &Path) -> std::io::Result<Result<(), LibraryProblem>> {
+    let bytes = std::fs::read(path)?;
+    Ok(check_library(&bytes))
+}
+
+/// Checks a library's bytes (see the module docs).
+pub fn check_library(data: &[u8]) -> Result<(), LibraryProblem> {
+    if data.len() < 5 || &data[..4] != b"\x7fELF" || data[4] != elf::ELFCLASS64 {
+        return Ok(()); // not a 64-bit ELF file: the platform's loader says what it is
+    }
+    let header = Header::parse(data).map_err(|e| damaged(format!("its ELF header: {e}")))?;
+    let endian = header
+        .endian()
+        .map_err(|e| damaged(format!("its ELF header: {e}")))?;
+    let needed = truncation_of(header, endian, data);
+    if needed > data.len() as u64 {
+        return Err(LibraryProblem::Truncated {
+            needed,
+            actual: data.len() as u64,
+        });
+    }
+    if header.e_type(endian) != elf::ET_DYN {
+        return Err(damaged(format!(
+            "it is not a shared library (ELF type {})",
+            header.e_type(endian)
+        )));
+    }
+    let machine = header.e_machine(endian);
+    if HOST_MACHINE.is_some_and(|host| host != machine) {
+        return Err(damaged(format!(
+            "it is built for another processor (ELF machine {machine}, this host is {})",
+            HOST_MACHINE.unwrap_or_default()
+        )));
+    }
+    let headers = header
+        .program_headers(endian, data)
+        .map_err(|e| damaged(format!("its program headers: {e}")))?;
+    let image = Image {
+        data,
+        endian,
+        machine,
+        loads: loads(headers, endian)?,
+        phoff: header.e_phoff(endian),
+        phsize: headers.len() as u64
+            * std::mem::size_of::<elf::ProgramHeader64<Endianness>>() as u64,
+    };
+    check_segments(&image, headers)?;
+    let dynamic = dynamic_entries(&image, headers)?;
+    check_dynamic(&image, &dynamic)
+}
+
+/// The size the headers require: the header tables and every segment's file part.
+fn truncation_of(header: &Header, endian: Endianness, data: &[u8]) -> u64 {
+    let ph_end = header
+        .e_phoff(endian)
+        .saturating_add(u64::from(header.e_phentsize(endian)) * u64::from(header.e_phnum(endian)));
+    let sh_end = header
+        .e_shoff(endian)
+        .saturating_add(u64::from(header.e_shentsize(endian)) * u64::from(header.e_shnum(endian)));
+    let segments = header
+        .program_headers(endian, data)
+        .map(|headers| {
+            headers
+                .iter()
+                .filter(|p| p.p_type(endian) == elf::PT_LOAD)
+                .map(|p| p.p_offset(endian).saturating_add(p.p_filesz(endian)))
+                .max()
+                .unwrap_or(0)
+        })
+        .unwrap_or(0);
+    ph_end.max(sh_end).max(segments)
+}
+
+/// Whether `path` is an ELF file that its own headers say is complete (`false` for other
+/// formats, which need another way to tell).
+pub fn is_complete_elf(path: &Path) -> bool {
+    let Ok(data) = std::fs::read(path) else {
+        return false;
+    };
+    if data.len() < 5 || &data[..4] != b"\x7fELF" {
+        return false;
+    }
+    !matches!(check_library(&data), Err(LibraryProblem::Truncated { .. }))
+        && Header::parse(&*data).is_ok()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn this_library() -> Vec<u8> {
+        // The test binary is an executable, not a library; any plugin cdylib next to it would
+        // do, but unit tests cannot rely on the workspace being built. A shared library every
+        // Linux machine has: the C library the test links.
+        let maps = std::fs::read_to_string("/proc/self/maps").unwrap_or_default();
+        let libc = maps
+            .lines()
+            .filter_map(|l| l.split_whitespace().nth(5))
+            .find(|p| p.contains("/libc.so") || p.contains("/libc-"))
+            .map(std::path::PathBuf::from);
+        libc.and_then(|p| std::fs::read(p).ok()).unwrap_or_default()
+    }
+
+    #[test]
+    fn the_c_library_passes() {
+        let libc = this_library();
+        if libc.is_empty() {
+            eprintln!("skipped: no libc.so mapped (not glibc on Linux)");
+            return;
+        }
+        assert_eq!(check_library(&libc), Ok(()));
+    }
+
+    #[test]
+    fn a_cut_file_is_measured() {
+        let libc = this_library();
+        if libc.is_empty() {
+            eprintln!("skipped: no libc.so mapped (not glibc on Linux)");
+            return;
+        }
+        let cut = &libc[..libc.len() - 1];
+        match check_library(cut) {
+            Err(LibraryProblem::Truncated { needed, actual }) => {
+                assert_eq!((needed, actual), (libc.len() as u64, libc.len() as u64 - 1))
+            }
+            other => panic!("{other:?}"),
+        }
+        assert_eq!(
+            check_library(b"plain text"),
+            Ok(()),
+            "not ELF: the loader judges"
+        );
+    }
+}
