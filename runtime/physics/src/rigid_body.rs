@@ -49,6 +49,18 @@ pub struct RigidBody {
     pub(crate) island: u32,
     /// Pose at the start of the current step (rollback target for quarantine).
     pub(crate) last_good_pose: Pose,
+    /// Body-frame angular velocity of a freely rotating body, and the world angular
+    /// velocity and orientation it was taken with: valid while both are unchanged (see
+    /// `SolverBody::omega_body`).
+    pub(crate) spin_cache: Option<SpinCache>,
+}
+
+/// See [`RigidBody::spin_cache`].
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) struct SpinCache {
+    pub world: Vec3,
+    pub rotation: Quat,
+    pub body: Vec3,
 }
 
 impl RigidBody {

@@ -205,6 +205,7 @@ impl RigidBodyDesc {
             solver_index: 0,
             island: u32::MAX,
             last_good_pose: self.pose,
+            spin_cache: None,
         };
         b.update_inverse_mass();
         b

@@ -93,6 +93,13 @@ impl PhysicsWorld {
                     Vec3A::ZERO
                 },
             });
+            let gyro = dynamic && b.anisotropic && b.locked.0 & LockedAxes::ALL_ROTATIONS.0 == 0;
+            let (omega_body, omega_world) = match b.spin_cache {
+                Some(c) if gyro && c.world == b.angvel && c.rotation == b.pose.rotation => {
+                    (c.body, Vec3A::from(c.world))
+                }
+                _ => (Vec3::ZERO, Vec3A::NAN),
+            };
             self.solver_bodies.push(SolverBody {
                 dq: glam::Quat::IDENTITY,
                 inv_i: mask_mat(inv_i, ang_mask),
@@ -113,8 +120,9 @@ impl PhysicsWorld {
                 ang_mask: (if dynamic { ang_mask } else { Vec3::ONE }).into(),
                 q0: b.pose.rotation,
                 inertia_local: b.mass.inertia,
-                inv_inertia_local: b.inv_inertia_local,
-                gyro: dynamic && b.anisotropic && b.locked.0 & 56 == 0,
+                omega_body,
+                omega_world,
+                gyro,
             });
         }
         self.output.counters.awake_bodies = (self.solver_bodies.len() - 1) as u32;
@@ -240,7 +248,7 @@ impl PhysicsWorld {
             max_linear_speed: s.max_linear_speed,
             max_angular_speed: s.max_angular_speed,
         };
-        solve_substeps(
+        self.output.counters.gyro_not_converged = solve_substeps(
             &mut self.solver_bodies,
             &mut self.solver_states,
             &mut self.contact_batches,

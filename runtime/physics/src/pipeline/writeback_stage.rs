@@ -9,6 +9,7 @@ use super::ccd::sweep_body;
 use crate::body_type::BodyType;
 use crate::physics_world::PhysicsWorld;
 use crate::pose::{unit_rotation, Pose};
+use crate::rigid_body::SpinCache;
 
 impl PhysicsWorld {
     pub(crate) fn writeback_stage(&mut self) {
@@ -69,6 +70,11 @@ impl PhysicsWorld {
             };
             b.pose = pose;
             b.last_good_pose = pose;
+            b.spin_cache = (sb.gyro && sb.omega_world == st.w).then_some(SpinCache {
+                world: b.angvel,
+                rotation: pose.rotation,
+                body: sb.omega_body,
+            });
             b.force = Vec3::ZERO;
             b.torque = Vec3::ZERO;
             // Bounds, swept ahead by the expected next-step motion.

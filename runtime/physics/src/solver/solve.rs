@@ -6,6 +6,7 @@ use glam::{Quat, Vec3, Vec3A};
 use super::batching::ContactBatches;
 use super::body_state::BodyState;
 use super::contact_batch::Pass;
+use super::free_rotation::free_rotation_step;
 use super::solver_body::SolverBody;
 use crate::pose::unit_rotation;
 
@@ -22,13 +23,15 @@ pub(crate) struct SolveParams {
     pub max_angular_speed: f32,
 }
 
-/// Runs all substeps over awake bodies and their contact batches.
+/// Runs all substeps over awake bodies and their contact batches. Returns how many
+/// free-rotation solves missed their tolerance (see [`free_rotation_step`]).
 pub(crate) fn solve_substeps(
     bodies: &mut [SolverBody],
     states: &mut [BodyState],
     batches: &mut ContactBatches,
     p: &SolveParams,
-) {
+) -> u32 {
+    let mut not_converged = 0;
     let substeps = p.substeps.max(1);
     let h = p.dt / substeps as f32;
     let solve_pass = Pass {
@@ -46,12 +49,13 @@ pub(crate) fn solve_substeps(
         for _ in 0..p.iterations.max(1) {
             batches.solve(states, solve_pass);
         }
-        integrate_positions(bodies, states, h);
+        not_converged += integrate_positions(bodies, states, h);
         for _ in 0..p.relax_iterations {
             batches.solve(states, relax_pass);
         }
     }
     batches.apply_restitution(states, p.restitution_threshold);
+    not_converged
 }
 
 fn integrate_velocities(bodies: &[SolverBody], states: &mut [BodyState], h: f32, p: &SolveParams) {
@@ -76,16 +80,37 @@ fn integrate_velocities(bodies: &[SolverBody], states: &mut [BodyState], h: f32,
     }
 }
 
-fn integrate_positions(bodies: &mut [SolverBody], states: &mut [BodyState], h: f32) {
+/// Moves every body by its substep velocity. Bodies with an anisotropic inertia and no
+/// rotation lock turn by the implicit midpoint rule ([`free_rotation_step`]), which keeps
+/// the energy and the angular momentum of free rotation; the others by the first-order
+/// quaternion update. Returns how many midpoint solves missed their tolerance.
+fn integrate_positions(bodies: &mut [SolverBody], states: &mut [BodyState], h: f32) -> u32 {
+    let mut not_converged = 0;
     for (b, st) in bodies.iter_mut().zip(states.iter_mut()).skip(1) {
         st.dp += st.v * h;
-        st.dtheta += st.w * h;
         let w = st.w;
         if w == Vec3A::ZERO {
             continue;
         }
-        let q_old = b.dq * b.q0;
         let dq = b.dq;
+        if b.gyro {
+            let q_old = dq * b.q0;
+            let omega = if w == b.omega_world {
+                b.omega_body
+            } else {
+                rotate(q_old.inverse(), Vec3::from(w))
+            };
+            let step = free_rotation_step(b.inertia_local, omega, h);
+            not_converged += u32::from(!step.converged);
+            let q_new = q_old * step.rotation;
+            b.dq = unit_rotation(q_new * b.q0.inverse());
+            st.dtheta += Vec3A::from(q_old * step.rotation_vector);
+            st.w = Vec3A::from(rotate(q_new, step.omega)) * b.ang_mask;
+            b.omega_body = step.omega;
+            b.omega_world = st.w;
+            continue;
+        }
+        st.dtheta += w * h;
         let spin = Quat::from_xyzw(w.x, w.y, w.z, 0.0) * dq;
         b.dq = unit_rotation(Quat::from_xyzw(
             dq.x + 0.5 * h * spin.x,
@@ -93,11 +118,20 @@ fn integrate_positions(bodies: &mut [SolverBody], states: &mut [BodyState], h: f
             dq.z + 0.5 * h * spin.z,
             dq.w + 0.5 * h * spin.w,
         ));
-        if b.gyro {
-            // Free rotation keeps world angular momentum L = R I Rᵀ ω.
-            let q_new = b.dq * b.q0;
-            let l = q_old * (b.inertia_local * (q_old.inverse() * Vec3::from(w)));
-            st.w = Vec3A::from(q_new * (b.inv_inertia_local * (q_new.inverse() * l))) * b.ang_mask;
-        }
+    }
+    not_converged
+}
+
+/// `q * v` with the length of `v` kept exactly: a unit quaternion in f32 has a norm off by
+/// rounding, and the two frame changes per substep of a tumbling body would otherwise scale
+/// its spin by that error every substep (energy drifted by 0.6 % per minute at 240 Hz).
+#[inline]
+fn rotate(q: Quat, v: Vec3) -> Vec3 {
+    let r = q * v;
+    let (l2, r2) = (v.length_squared(), r.length_squared());
+    if r2 > 0.0 {
+        r * (l2 / r2).sqrt()
+    } else {
+        r
     }
 }
