@@ -67,9 +67,13 @@ pub struct PhysicsSettings {
     /// Default: `0.1`
     /// Too high: many pairs that never touch. Too low: tree updates every step.
     pub aabb_margin: f32,
-    /// Normal approach speed below which restitution is ignored, m/s.
-    /// Default: `1`
-    /// Too high: small bounces die. Too low: resting bodies never settle (micro bounces).
+    /// Impact speed (normal approach at the moment of contact, see
+    /// [`crate::solver::restitution`]) at or below which a contact does not bounce, m/s.
+    /// Approaches no faster than one substep of gravity never bounce (that is how resting
+    /// looks to the integrator), so 0 is safe: every real impact bounces.
+    /// Default: `0.1` (a ball stops bouncing once its rebounds are below 0.5 mm)
+    /// Too high: small bounces die (at 1 m/s, two e = 1 balls meeting at 0.5 m/s stick
+    /// together). Too low: bouncy bodies take longer to come to rest (each bounce is real).
     pub restitution_threshold: f32,
     /// Tangential speed below which a contact uses static friction, m/s.
     /// Default: `0.05`
@@ -122,7 +126,7 @@ impl Default for PhysicsSettings {
             speculative_distance: 0.02,
             max_speculative_distance: 0.5,
             aabb_margin: 0.1,
-            restitution_threshold: 1.0,
+            restitution_threshold: 0.1,
             static_friction_speed: 0.05,
             max_linear_speed: 1000.0,
             max_angular_speed: 200.0,

@@ -14,6 +14,7 @@ use crate::solver::contact_constraint::{
     PreparedManifold,
 };
 use crate::solver::noise::matrix_without_noise;
+use crate::solver::restitution::bounce_velocity;
 use crate::solver::solve::{solve_substeps, SolveParams};
 use crate::solver::solver_body::SolverBody;
 use crate::solver::Softness;
@@ -190,6 +191,7 @@ impl PhysicsWorld {
                 normal: n.into(),
                 tangent: [t1.into(), t2.into()],
                 restitution: pair.restitution,
+                bounce_accel: 0.0,
                 softness: Softness::RIGID,
                 count: r.count,
                 friction: FrictionPart::default(),
@@ -218,6 +220,24 @@ impl PhysicsWorld {
                 pair.dynamic_friction,
                 s.static_friction_speed,
             );
+            if pair.restitution > 0.0 {
+                // Relative normal acceleration (gravity, forces) for the impact speed.
+                let accel = n.dot(Vec3::from(
+                    bodies[r.body_b as usize].lin_acc - bodies[r.body_a as usize].lin_acc,
+                ));
+                c.bounce_accel = accel;
+                for cp in &mut points[..count] {
+                    cp.bounce_velocity = bounce_velocity(
+                        cp.relative_velocity,
+                        cp.base_separation,
+                        accel,
+                        h,
+                        pair.restitution,
+                        s.restitution_threshold,
+                    )
+                    .unwrap_or(f32::NAN);
+                }
+            }
             // Static contacts are twice as stiff (Box2D v3); both stiffen with load.
             let base_hz = if r.writes == 3 { hertz } else { 2.0 * hertz };
             let (load, own) = points[..count].iter().fold((0.0f32, 0.0f32), |(p, m), cp| {
@@ -244,7 +264,6 @@ impl PhysicsWorld {
             iterations: s.solver_iterations,
             relax_iterations: s.relax_iterations,
             max_push: s.max_contact_push_speed,
-            restitution_threshold: s.restitution_threshold,
             max_linear_speed: s.max_linear_speed,
             max_angular_speed: s.max_angular_speed,
         };

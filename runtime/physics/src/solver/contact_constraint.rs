@@ -29,8 +29,11 @@ pub(crate) struct ConstraintPoint {
     /// Its inverse `J M⁻¹ Jᵀ` (the soft row's compliance is this times
     /// `impulse_scale / mass_scale`).
     pub inv_normal_mass: f32,
-    /// Normal relative velocity at step start (for restitution), m/s.
+    /// Normal relative velocity at step start (pre-solve), m/s.
     pub relative_velocity: f32,
+    /// Rebound speed restitution gives this point after the substeps, m/s (see
+    /// [`super::restitution::bounce_velocity`]); NaN where it does not bounce.
+    pub bounce_velocity: f32,
     /// Distance from the manifold centre in the contact plane (twist friction lever), m.
     pub twist_lever: f32,
     /// Angular Jacobians `r × n` for A and B (fixed for the step).
@@ -132,6 +135,8 @@ pub(crate) struct ContactConstraint {
     pub normal: Vec3A,
     pub tangent: [Vec3A; 2],
     pub restitution: f32,
+    /// Relative normal acceleration of the bodies (gravity, forces), m/s², for restitution.
+    pub bounce_accel: f32,
     pub softness: Softness,
     pub count: u8,
     /// Friction at the manifold centre.
@@ -225,6 +230,7 @@ pub(crate) fn prepare(
         cp.inv_normal_mass = k;
         cp.normal_mass = if k > 0.0 { 1.0 / k } else { 0.0 };
         cp.relative_velocity = dv.dot(n);
+        cp.bounce_velocity = f32::NAN;
         let off = ra - ca;
         cp.twist_lever = (off - n * off.dot(n)).length();
         cp.max_normal_impulse = 0.0;

@@ -8,6 +8,7 @@ pub(crate) mod face_contact;
 pub mod free_rotation;
 pub(crate) mod lanes;
 pub(crate) mod noise;
+pub mod restitution;
 pub mod softness;
 pub(crate) mod solve;
 pub(crate) mod solver_body;

@@ -10,6 +10,14 @@ use super::free_rotation::free_rotation_step;
 use super::solver_body::SolverBody;
 use crate::pose::unit_rotation;
 
+/// Restitution passes after the substeps: the first gives the impacts the substeps absorbed
+/// their rebound, the others resolve the collisions those rebounds cause in the same step
+/// (see `ContactBatch::apply_restitution`). Bounded `[1, 16]`: each pass is one more
+/// collision down a chain of touching bodies (Newton's cradle needs one per ball); fewer
+/// passes leave such chains inelastic (50 elastic balls in a box lost 4 % of their energy
+/// per 10,000 steps at 4 passes), more cost a pass over the bouncing contacts each.
+pub const RESTITUTION_PASSES: u32 = 4;
+
 /// Parameters of one solver run (derived from `PhysicsSettings`).
 #[derive(Clone, Copy, Debug)]
 pub(crate) struct SolveParams {
@@ -18,7 +26,6 @@ pub(crate) struct SolveParams {
     pub iterations: u32,
     pub relax_iterations: u32,
     pub max_push: f32,
-    pub restitution_threshold: f32,
     pub max_linear_speed: f32,
     pub max_angular_speed: f32,
 }
@@ -54,7 +61,9 @@ pub(crate) fn solve_substeps(
             batches.solve(states, relax_pass);
         }
     }
-    batches.apply_restitution(states, p.restitution_threshold);
+    for _ in 0..RESTITUTION_PASSES {
+        batches.apply_restitution(states, h);
+    }
     not_converged
 }
 
