@@ -70,6 +70,7 @@ pub mod rigid_body; // `RigidBody`: state of one body.
 pub mod rigid_body_desc; // `RigidBodyDesc`: body builder.
 pub mod shape; // Collision shapes (sphere, box, capsule, half space, hull, triangle mesh).
 pub mod solver; // Soft-step contact solver.
+pub mod speed_cap_hit; // `SpeedCapHit`: a body clamped to a speed cap (reported once).
 pub mod step_counters; // `StepCounters`: stage timings and work counts.
 pub mod step_output; // `StepOutput`: counters, events, quarantined bodies of a step.
 
@@ -95,5 +96,6 @@ pub use query::{QueryFilter, RayHit};
 pub use rigid_body::RigidBody;
 pub use rigid_body_desc::RigidBodyDesc;
 pub use shape::Shape;
+pub use speed_cap_hit::{SpeedCap, SpeedCapHit};
 pub use step_counters::StepCounters;
 pub use step_output::StepOutput;

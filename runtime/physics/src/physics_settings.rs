@@ -79,13 +79,16 @@ pub struct PhysicsSettings {
     /// Default: `0.05`
     /// Too high: sliding bodies stop too early. Too low: static friction rarely applies.
     pub static_friction_speed: f32,
-    /// Speed limit, m/s.
+    /// Speed cap, m/s: a body's linear speed is clamped to it before every substep's motion.
+    /// The first time a body is clamped it is named in `StepOutput::speed_caps` (once per
+    /// body and cap), so a host can say so.
     /// Default: `1000`
     /// Too high: a blow-up can throw bodies very far. Too low: fast projectiles are slowed.
     pub max_linear_speed: f32,
-    /// Spin limit, rad/s.
+    /// Spin cap, rad/s, clamped and reported like `max_linear_speed`.
     /// Default: `200`
-    /// Too high: unstable integration of spinning bodies. Too low: spinning bodies are slowed.
+    /// Too high: a body turns by more than a radian per substep and its contacts (refreshed
+    /// once per step) lag its faces. Too low: spinning bodies are slowed.
     pub max_angular_speed: f32,
     /// Whether resting islands fall asleep.
     /// Default: `true`

@@ -53,6 +53,8 @@ pub struct RigidBody {
     /// velocity and orientation it was taken with: valid while both are unchanged (see
     /// `SolverBody::omega_body`).
     pub(crate) spin_cache: Option<SpinCache>,
+    /// Speed caps already reported for this body (`SolverBody::capped` bits).
+    pub(crate) caps_reported: u8,
 }
 
 /// See [`RigidBody::spin_cache`].

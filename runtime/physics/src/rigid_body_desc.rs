@@ -206,6 +206,7 @@ impl RigidBodyDesc {
             island: u32::MAX,
             last_good_pose: self.pose,
             spin_cache: None,
+            caps_reported: 0,
         };
         b.update_inverse_mass();
         b

@@ -2,6 +2,7 @@
 
 use crate::body_handle::BodyHandle;
 use crate::contact_event::ContactEvent;
+use crate::speed_cap_hit::SpeedCapHit;
 use crate::step_counters::StepCounters;
 
 /// What [`crate::PhysicsWorld::step`] returns; valid until the next step.
@@ -13,4 +14,6 @@ pub struct StepOutput {
     pub events: Vec<ContactEvent>,
     /// Bodies whose state went non-finite this step: rolled back, disabled.
     pub quarantined: Vec<BodyHandle>,
+    /// Bodies clamped to a speed cap for the first time (once per body and cap, ever).
+    pub speed_caps: Vec<SpeedCapHit>,
 }

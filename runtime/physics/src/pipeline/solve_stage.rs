@@ -123,6 +123,7 @@ impl PhysicsWorld {
                 inertia_local: b.mass.inertia,
                 omega_body,
                 omega_world,
+                capped: 0,
                 gyro,
             });
         }

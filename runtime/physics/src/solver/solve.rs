@@ -7,7 +7,7 @@ use super::batching::ContactBatches;
 use super::body_state::BodyState;
 use super::contact_batch::Pass;
 use super::free_rotation::free_rotation_step;
-use super::solver_body::SolverBody;
+use super::solver_body::{SolverBody, CAPPED_ANGULAR, CAPPED_LINEAR};
 use crate::pose::unit_rotation;
 
 /// Restitution passes after the substeps: the first gives the impacts the substeps absorbed
@@ -51,12 +51,12 @@ pub(crate) fn solve_substeps(
         ..solve_pass
     };
     for _ in 0..substeps {
-        integrate_velocities(bodies, states, h, p);
+        integrate_velocities(bodies, states, h);
         batches.warm_start(states);
         for _ in 0..p.iterations.max(1) {
             batches.solve(states, solve_pass);
         }
-        not_converged += integrate_positions(bodies, states, h);
+        not_converged += integrate_positions(bodies, states, h, p);
         for _ in 0..p.relax_iterations {
             batches.solve(states, relax_pass);
         }
@@ -67,35 +67,46 @@ pub(crate) fn solve_substeps(
     not_converged
 }
 
-fn integrate_velocities(bodies: &[SolverBody], states: &mut [BodyState], h: f32, p: &SolveParams) {
-    let max_v2 = p.max_linear_speed * p.max_linear_speed;
-    let max_w2 = p.max_angular_speed * p.max_angular_speed;
+fn integrate_velocities(bodies: &[SolverBody], states: &mut [BodyState], h: f32) {
     for (b, st) in bodies.iter().zip(states.iter_mut()).skip(1) {
-        let mut v = st.v + b.lin_acc * h;
-        let mut w = st.w + b.ang_acc * h;
-        v *= b.lin_damp_factor;
-        w *= b.ang_damp_factor;
-        // Squared lengths against squared limits: no square root for the common case.
-        let vl2 = v.length_squared();
-        if vl2 > max_v2 {
-            v *= p.max_linear_speed / vl2.sqrt();
-        }
-        let wl2 = w.length_squared();
-        if wl2 > max_w2 {
-            w *= p.max_angular_speed / wl2.sqrt();
-        }
+        let v = (st.v + b.lin_acc * h) * b.lin_damp_factor;
+        let w = (st.w + b.ang_acc * h) * b.ang_damp_factor;
         st.v = v * b.lin_mask;
         st.w = w * b.ang_mask;
     }
 }
 
-/// Moves every body by its substep velocity. Bodies with an anisotropic inertia and no
-/// rotation lock turn by the implicit midpoint rule ([`free_rotation_step`]), which keeps
-/// the energy and the angular momentum of free rotation; the others by the first-order
-/// quaternion update. Returns how many midpoint solves missed their tolerance.
-fn integrate_positions(bodies: &mut [SolverBody], states: &mut [BodyState], h: f32) -> u32 {
+/// Clamps a body's solved velocities to the speed caps before they move it, and marks in
+/// `b.capped` which cap it hit ([`CAPPED_LINEAR`], [`CAPPED_ANGULAR`]).
+#[inline]
+fn clamp_to_caps(b: &mut SolverBody, st: &mut BodyState, max_v: f32, max_w: f32) {
+    // Squared lengths against squared limits: no square root for the common case.
+    let vl2 = st.v.length_squared();
+    if vl2 > max_v * max_v {
+        st.v *= max_v / vl2.sqrt();
+        b.capped |= CAPPED_LINEAR;
+    }
+    let wl2 = st.w.length_squared();
+    if wl2 > max_w * max_w {
+        st.w *= max_w / wl2.sqrt();
+        b.capped |= CAPPED_ANGULAR;
+    }
+}
+
+/// Moves every body by its substep velocity, clamped to the speed caps first (the solve may
+/// have raised it past them). Bodies with an anisotropic inertia and no rotation lock turn by
+/// the implicit midpoint rule ([`free_rotation_step`]), which keeps the energy and the
+/// angular momentum of free rotation; the others by the first-order quaternion update.
+/// Returns how many midpoint solves missed their tolerance.
+fn integrate_positions(
+    bodies: &mut [SolverBody],
+    states: &mut [BodyState],
+    h: f32,
+    p: &SolveParams,
+) -> u32 {
     let mut not_converged = 0;
     for (b, st) in bodies.iter_mut().zip(states.iter_mut()).skip(1) {
+        clamp_to_caps(b, st, p.max_linear_speed, p.max_angular_speed);
         st.dp += st.v * h;
         let w = st.w;
         if w == Vec3A::ZERO {

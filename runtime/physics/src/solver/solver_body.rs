@@ -3,6 +3,11 @@
 
 use glam::{Mat3, Quat, Vec3, Vec3A};
 
+/// [`SolverBody::capped`] bit: the linear speed was clamped to `max_linear_speed`.
+pub(crate) const CAPPED_LINEAR: u8 = 1;
+/// [`SolverBody::capped`] bit: the spin was clamped to `max_angular_speed`.
+pub(crate) const CAPPED_ANGULAR: u8 = 2;
+
 /// Constants of one awake dynamic or kinematic body during a step, and its rotation.
 /// Index 0 of the solver array is a dummy for static/sleeping bodies (all zero).
 #[derive(Clone, Copy, Debug)]
@@ -33,6 +38,8 @@ pub(crate) struct SolverBody {
     pub omega_body: Vec3,
     /// The world angular velocity `omega_body` belongs to (NaN when none does).
     pub omega_world: Vec3A,
+    /// Which speed caps the step clamped ([`CAPPED_LINEAR`], [`CAPPED_ANGULAR`]).
+    pub capped: u8,
     /// Turn by the energy- and momentum-preserving free-rotation update
     /// ([`super::free_rotation`]): anisotropic inertia, no rotation axis locked.
     pub gyro: bool,
@@ -53,6 +60,7 @@ impl SolverBody {
         inertia_local: Mat3::ZERO,
         omega_body: Vec3::ZERO,
         omega_world: Vec3A::NAN,
+        capped: 0,
         gyro: false,
     };
 }
