@@ -56,10 +56,12 @@ pub mod combine_rule; // `CombineRule`: how two materials mix.
 pub mod contact_event; // `ContactEvent`: contact started / ended.
 pub mod debug_line; // `DebugLine`: coloured segment for debug draw.
 pub mod debug_lines; // `PhysicsWorld::debug_lines`: outlines, contacts, normals.
+pub mod far_body; // `FarBody`: a moving body past the precise range of f32 (reported once).
 pub mod locked_axes; // `LockedAxes`: per-axis locks.
 pub mod mass_properties; // `MassProperties`: mass, centre of mass, inertia tensor.
 pub mod material; // `Material`: restitution and friction.
 pub mod narrowphase; // Contact generation, GJK/EPA, persistent manifolds and pairs.
+pub mod overloaded_contact; // `OverloadedContact`: a contact deeper than its budget (reported once).
 pub mod physics_preset; // `PhysicsPreset`: named accuracy profiles (fast / balanced / precise).
 pub mod physics_settings; // `PhysicsSettings`: every tunable with unit and cost.
 pub mod physics_world; // `PhysicsWorld`: owner of everything; `step()`.
@@ -85,9 +87,11 @@ pub use collider_set::ColliderSet;
 pub use combine_rule::CombineRule;
 pub use contact_event::{ContactEvent, ContactEventKind};
 pub use debug_line::DebugLine;
+pub use far_body::FarBody;
 pub use locked_axes::LockedAxes;
 pub use mass_properties::MassProperties;
 pub use material::Material;
+pub use overloaded_contact::OverloadedContact;
 pub use physics_preset::PhysicsPreset;
 pub use physics_settings::PhysicsSettings;
 pub use physics_world::PhysicsWorld;

@@ -45,6 +45,25 @@ pub struct PhysicsSettings {
     /// Default: `3`
     /// Too high: deep overlaps explode apart. Too low: deep overlaps resolve slowly.
     pub max_contact_push_speed: f32,
+    /// Penetration budget of a resting contact, as a fraction of the smallest dimension of
+    /// the smaller body (a sphere's diameter, a box's shortest side). A contact whose load
+    /// would press it deeper stiffens until its static deflection fits (up to a stiffness of
+    /// one period per substep); where even that is not enough (a heavy load on a small
+    /// body at a coarse step) the contact is named in `StepOutput::overloaded_contacts`.
+    /// Default: `0.02` (two such contacts in a chain stay under 5 % of the body's size)
+    /// Too high: small bodies and heavily loaded ones visibly sink into each other. Too low:
+    /// more contacts run at the stiffness cap, where stacks and piles ring a little more.
+    pub max_penetration_fraction: f32,
+    /// Largest mass ratio a resting contact between two dynamic bodies is solved with: the
+    /// lighter body's inverse mass is scaled down in that contact so that it looks at most
+    /// this many times lighter (see the solve stage's `support_mass_scale`). Impacts use the
+    /// true masses.
+    /// Default: `10`
+    /// Too high (or 0, off): a heavy body on a light one rings into it for `√ratio`
+    /// substeps and sinks about `g·ratio·h²` (17 cm for 1000:1 at balanced). Too low: the
+    /// light body passes on visibly less of the heavy one's weight (its contact with the
+    /// ground reports less force; it slides more easily under friction).
+    pub max_support_mass_ratio: f32,
     /// Contact distance tolerance, metres: the CCD stop distance and the hysteresis for
     /// ending contact events. (The solver has no penetration dead zone: resting bodies sink
     /// only by the soft contact's static deflection, ~0.07 mm on the ground at defaults.)
@@ -90,6 +109,13 @@ pub struct PhysicsSettings {
     /// Too high: a body turns by more than a radian per substep and its contacts (refreshed
     /// once per step) lag its faces. Too low: spinning bodies are slowed.
     pub max_angular_speed: f32,
+    /// Coarsest spacing of `f32` positions the engine's accuracy holds with, metres. Moving
+    /// bodies farther from the origin than [`PhysicsSettings::precise_range`] (where the
+    /// spacing is coarser) are named once in `StepOutput::far_bodies`.
+    /// Default: `0.001` (range 16,384 m)
+    /// Too high: bodies lose slow motions to rounding (at 1e6 m the spacing is 6 cm) without
+    /// a word. Too low: warnings for worlds that are fine.
+    pub max_position_spacing: f32,
     /// Whether resting islands fall asleep.
     /// Default: `true`
     pub sleep_enabled: bool,
@@ -114,6 +140,24 @@ pub struct PhysicsSettings {
     pub grounded_min_normal_y: f32,
 }
 
+impl PhysicsSettings {
+    /// Distance from the origin, metres, within which `f32` positions are spaced at most
+    /// [`PhysicsSettings::max_position_spacing`] apart: `2^(⌊log₂ spacing⌋ + 24)` (16,384 m
+    /// for 1 mm).
+    #[must_use]
+    pub fn precise_range(&self) -> f32 {
+        if self.max_position_spacing.is_nan() || self.max_position_spacing <= 0.0 {
+            return f32::MAX;
+        }
+        let e = self.max_position_spacing.log2().floor() + 24.0;
+        if e >= 128.0 {
+            f32::MAX
+        } else {
+            e.exp2()
+        }
+    }
+}
+
 impl Default for PhysicsSettings {
     fn default() -> Self {
         Self {
@@ -125,6 +169,8 @@ impl Default for PhysicsSettings {
             contact_hertz: 32.0,
             contact_damping_ratio: 5.0,
             max_contact_push_speed: 3.0,
+            max_penetration_fraction: 0.02,
+            max_support_mass_ratio: 10.0,
             linear_slop: 0.001,
             speculative_distance: 0.02,
             max_speculative_distance: 0.5,
@@ -133,6 +179,7 @@ impl Default for PhysicsSettings {
             static_friction_speed: 0.05,
             max_linear_speed: 1000.0,
             max_angular_speed: 200.0,
+            max_position_spacing: 0.001,
             sleep_enabled: true,
             sleep_linear_threshold: 0.05,
             sleep_angular_threshold: 0.1,

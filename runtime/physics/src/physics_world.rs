@@ -304,6 +304,8 @@ impl PhysicsWorld {
         self.output.events.append(&mut self.pending_events);
         self.output.quarantined.clear();
         self.output.speed_caps.clear();
+        self.output.overloaded_contacts.clear();
+        self.output.far_bodies.clear();
         self.output.counters = Default::default();
         if !(self.settings.dt > 0.0 && self.settings.dt.is_finite()) {
             return &self.output;

@@ -55,6 +55,8 @@ pub struct RigidBody {
     pub(crate) spin_cache: Option<SpinCache>,
     /// Speed caps already reported for this body (`SolverBody::capped` bits).
     pub(crate) caps_reported: u8,
+    /// Already named in `StepOutput::far_bodies`.
+    pub(crate) far_reported: bool,
 }
 
 /// See [`RigidBody::spin_cache`].

@@ -207,6 +207,7 @@ impl RigidBodyDesc {
             last_good_pose: self.pose,
             spin_cache: None,
             caps_reported: 0,
+            far_reported: false,
         };
         b.update_inverse_mass();
         b

@@ -105,6 +105,7 @@ impl NarrowPhase {
     }
 
     /// Adds a pair unless it exists. Returns true when added.
+    #[allow(clippy::too_many_arguments)]
     pub(crate) fn add_pair(
         &mut self,
         ca: ColliderHandle,
@@ -113,6 +114,7 @@ impl NarrowPhase {
         bb: BodyHandle,
         ma: &Material,
         mb: &Material,
+        size: f32,
     ) -> bool {
         let k = key(ca, cb);
         if self.index.contains_key(&k) {
@@ -135,6 +137,9 @@ impl NarrowPhase {
             solved_pushing: None,
             generated_at: None,
             ball_ball: false,
+            size,
+            overload_reported: false,
+            load_memory: 0.0,
         });
         true
     }

@@ -12,6 +12,7 @@ use glam::Vec3;
 use super::ccd::{sweep_body, BodyMotion};
 use crate::body_handle::BodyHandle;
 use crate::body_type::BodyType;
+use crate::far_body::FarBody;
 use crate::physics_world::PhysicsWorld;
 use crate::pose::{unit_rotation, Pose};
 use crate::rigid_body::SpinCache;
@@ -44,17 +45,8 @@ impl PhysicsWorld {
             };
             self.end_poses.push(pose);
         }
-        let others_move = (1..n)
-            .filter_map(|k| {
-                let b = self.bodies.arena.get_by_index(self.solver_handles[k])?;
-                let com0 = b.pose.transform_point(b.mass.local_com);
-                Some(
-                    self.end_poses[k]
-                        .transform_point(b.mass.local_com)
-                        .distance(com0),
-                )
-            })
-            .fold(0.0f32, f32::max);
+        // Largest displacement of any body, computed once the first CCD body is met.
+        let mut max_move: Option<f32> = None;
         // Pass 2: CCD, from the start poses (still in the bodies) to the end poses.
         self.ccd_clamps.clear();
         if s.ccd_enabled {
@@ -81,6 +73,19 @@ impl PhysicsWorld {
                     continue;
                 }
                 let t0 = Instant::now();
+                let others_move = *max_move.get_or_insert_with(|| {
+                    (1..n)
+                        .filter_map(|j| {
+                            let o = self.bodies.arena.get_by_index(self.solver_handles[j])?;
+                            let com0 = o.pose.transform_point(o.mass.local_com);
+                            Some(
+                                end_poses[j]
+                                    .transform_point(o.mass.local_com)
+                                    .distance(com0),
+                            )
+                        })
+                        .fold(0.0f32, f32::max)
+                });
                 let motion = BodyMotion::between(&b.pose, end, b.mass.local_com);
                 let sweep = sweep_body(
                     &self.colliders,
@@ -123,6 +128,7 @@ impl PhysicsWorld {
             }
         }
         // Pass 3: commit.
+        let range = s.precise_range();
         for k in 1..n {
             let sb = self.solver_bodies[k];
             let st = self.solver_states[k];
@@ -152,6 +158,17 @@ impl PhysicsWorld {
                             limit,
                         });
                     }
+                }
+            }
+            if !b.far_reported {
+                let distance = pose.translation.abs().max_element();
+                if distance > range {
+                    b.far_reported = true;
+                    self.output.far_bodies.push(FarBody {
+                        body: handle,
+                        distance,
+                        range,
+                    });
                 }
             }
             b.linvel = st.v.into();

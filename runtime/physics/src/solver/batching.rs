@@ -251,6 +251,7 @@ mod tests {
                 tangent: [Vec3A::X, Vec3A::Z],
                 restitution: 0.0,
                 bounce_accel: 0.0,
+                mass_scale: [1.0; 2],
                 softness: Softness::RIGID,
                 count: r.count,
                 friction: FrictionPart::default(),

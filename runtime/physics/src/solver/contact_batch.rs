@@ -326,8 +326,10 @@ impl<const N: usize, M: ManifoldRows, L: Levers<N>> ContactBatch<N, M, L> {
         self.body_b[l] = c.body_b;
         self.writes_a |= (c.writes & 1) << l;
         self.writes_b |= ((c.writes >> 1) & 1) << l;
-        self.inv_mass_a.set(l, states[c.body_a as usize].inv_mass);
-        self.inv_mass_b.set(l, states[c.body_b as usize].inv_mass);
+        self.inv_mass_a
+            .set(l, states[c.body_a as usize].inv_mass * c.mass_scale[0]);
+        self.inv_mass_b
+            .set(l, states[c.body_b as usize].inv_mass * c.mass_scale[1]);
         self.normal.set(l, c.normal);
         self.tangent[0].set(l, c.tangent[0]);
         self.tangent[1].set(l, c.tangent[1]);

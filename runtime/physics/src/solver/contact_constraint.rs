@@ -137,6 +137,9 @@ pub(crate) struct ContactConstraint {
     pub restitution: f32,
     /// Relative normal acceleration of the bodies (gravity, forces), m/s², for restitution.
     pub bounce_accel: f32,
+    /// Factors on each body's inverse mass and inertia in this manifold's rows (1 but for
+    /// the light body of a resting contact past `PhysicsSettings::max_support_mass_ratio`).
+    pub mass_scale: [f32; 2],
     pub softness: Softness,
     pub count: u8,
     /// Friction at the manifold centre.
@@ -194,13 +197,14 @@ pub(crate) fn prepare(
     static_speed: f32,
 ) {
     let (sa, sb) = (&states[c.body_a as usize], &states[c.body_b as usize]);
+    let [ka, kb] = c.mass_scale;
     let a = &MassView {
-        inv_mass: sa.inv_mass,
-        inv_i: Mat3A::from(bodies[c.body_a as usize].inv_i),
+        inv_mass: sa.inv_mass * ka,
+        inv_i: Mat3A::from(bodies[c.body_a as usize].inv_i) * ka,
     };
     let b = &MassView {
-        inv_mass: sb.inv_mass,
-        inv_i: Mat3A::from(bodies[c.body_b as usize].inv_i),
+        inv_mass: sb.inv_mass * kb,
+        inv_i: Mat3A::from(bodies[c.body_b as usize].inv_i) * kb,
     };
     let n = c.normal;
     let inv_count = 1.0 / anchors.len().max(1) as f32;
