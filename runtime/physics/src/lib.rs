@@ -70,6 +70,7 @@ pub mod pose; // `Pose`: rotation + translation.
 pub mod query; // Scene queries: ray casts, shape and AABB overlap.
 pub mod rigid_body; // `RigidBody`: state of one body.
 pub mod rigid_body_desc; // `RigidBodyDesc`: body builder.
+pub mod settings_error; // `SettingsError`: a settings field outside what can be simulated.
 pub mod shape; // Collision shapes (sphere, box, capsule, half space, hull, triangle mesh).
 pub mod solver; // Soft-step contact solver.
 pub mod speed_cap_hit; // `SpeedCapHit`: a body clamped to a speed cap (reported once).
@@ -99,6 +100,7 @@ pub use pose::Pose;
 pub use query::{QueryFilter, RayHit};
 pub use rigid_body::RigidBody;
 pub use rigid_body_desc::RigidBodyDesc;
+pub use settings_error::SettingsError;
 pub use shape::Shape;
 pub use speed_cap_hit::{SpeedCap, SpeedCapHit};
 pub use step_counters::StepCounters;

@@ -2,10 +2,16 @@
 
 use glam::Vec3;
 
+use crate::settings_error::SettingsError;
+
 /// Simulation settings. Each field states its unit, its default (the line
 /// `Default: ` is checked against [`PhysicsSettings::default`] by a test) and what
-/// too high / too low does.
+/// too high / too low does. With the `serde` feature, a partial description fills the
+/// missing fields from [`PhysicsSettings::default`]; check what was read with
+/// [`PhysicsSettings::validate`].
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(feature = "serde", serde(default, deny_unknown_fields))]
 pub struct PhysicsSettings {
     /// Step length, seconds.
     /// Default: `1/60`
@@ -141,6 +147,83 @@ pub struct PhysicsSettings {
 }
 
 impl PhysicsSettings {
+    /// Checks every field against the values the engine can simulate: finite numbers,
+    /// positive where a rate, length or count must be, fractions in their range.
+    ///
+    /// # Errors
+    /// [`SettingsError::OutOfRange`] naming the first field that is not.
+    pub fn validate(&self) -> Result<(), SettingsError> {
+        fn check(
+            field: &'static str,
+            value: f32,
+            ok: bool,
+            expected: &'static str,
+        ) -> Result<(), SettingsError> {
+            if value.is_finite() && ok {
+                Ok(())
+            } else {
+                Err(SettingsError::OutOfRange {
+                    field,
+                    value: f64::from(value),
+                    expected,
+                })
+            }
+        }
+        let count = |field: &'static str, n: u32, min: u32| {
+            if n >= min {
+                Ok(())
+            } else {
+                Err(SettingsError::OutOfRange {
+                    field,
+                    value: f64::from(n),
+                    expected: if min == 0 { ">= 0" } else { ">= 1" },
+                })
+            }
+        };
+        let positive = |field, v: f32| check(field, v, v > 0.0, "finite and > 0");
+        let non_negative = |field, v: f32| check(field, v, v >= 0.0, "finite and >= 0");
+        positive("dt", self.dt)?;
+        for (field, g) in [
+            ("gravity.x", self.gravity.x),
+            ("gravity.y", self.gravity.y),
+            ("gravity.z", self.gravity.z),
+        ] {
+            check(field, g, true, "finite")?;
+        }
+        count("substeps", self.substeps, 1)?;
+        count("solver_iterations", self.solver_iterations, 1)?;
+        count("relax_iterations", self.relax_iterations, 0)?;
+        positive("contact_hertz", self.contact_hertz)?;
+        non_negative("contact_damping_ratio", self.contact_damping_ratio)?;
+        positive("max_contact_push_speed", self.max_contact_push_speed)?;
+        check(
+            "max_penetration_fraction",
+            self.max_penetration_fraction,
+            self.max_penetration_fraction > 0.0 && self.max_penetration_fraction < 1.0,
+            "in (0, 1)",
+        )?;
+        non_negative("max_support_mass_ratio", self.max_support_mass_ratio)?;
+        positive("linear_slop", self.linear_slop)?;
+        non_negative("speculative_distance", self.speculative_distance)?;
+        non_negative("max_speculative_distance", self.max_speculative_distance)?;
+        non_negative("aabb_margin", self.aabb_margin)?;
+        non_negative("restitution_threshold", self.restitution_threshold)?;
+        non_negative("static_friction_speed", self.static_friction_speed)?;
+        positive("max_linear_speed", self.max_linear_speed)?;
+        positive("max_angular_speed", self.max_angular_speed)?;
+        positive("max_position_spacing", self.max_position_spacing)?;
+        non_negative("sleep_linear_threshold", self.sleep_linear_threshold)?;
+        non_negative("sleep_angular_threshold", self.sleep_angular_threshold)?;
+        non_negative("time_to_sleep", self.time_to_sleep)?;
+        check(
+            "grounded_min_normal_y",
+            self.grounded_min_normal_y,
+            (-1.0..=1.0).contains(&self.grounded_min_normal_y),
+            "in [-1, 1]",
+        )?;
+        Ok(())
+    }
+
     /// Distance from the origin, metres, within which `f32` positions are spaced at most
     /// [`PhysicsSettings::max_position_spacing`] apart: `2^(⌊log₂ spacing⌋ + 24)` (16,384 m
     /// for 1 mm).

@@ -71,3 +71,30 @@ fn documented_defaults_equal_default_impl() {
     }
     assert_eq!(checked, 25, "every settings field checked");
 }
+
+#[test]
+fn the_defaults_and_every_preset_validate() {
+    use onyx_physics::PhysicsPreset;
+    assert_eq!(PhysicsSettings::default().validate(), Ok(()));
+    for p in PhysicsPreset::ALL {
+        assert_eq!(p.settings().validate(), Ok(()), "{p}");
+    }
+}
+
+#[test]
+fn a_bad_field_is_named_with_its_value() {
+    let s = PhysicsSettings {
+        max_penetration_fraction: 1.5,
+        ..Default::default()
+    };
+    let e = s.validate().expect_err("1.5 is not a fraction");
+    assert_eq!(
+        e.to_string(),
+        "physics.max_penetration_fraction must be in (0, 1), got 1.5"
+    );
+    let s = PhysicsSettings {
+        dt: f32::NAN,
+        ..Default::default()
+    };
+    assert!(s.validate().is_err());
+}
