@@ -345,27 +345,38 @@ impl PhysicsWorld {
                 0.0
             };
             let budget = s.max_penetration_fraction * pair.size;
-            let needed = Softness::size_hertz(load_accel, budget);
             let load_hz = Softness::load_hertz(base_hz, ratio, cap);
-            let size_hz = needed.min(max_size_hertz);
-            c.softness = if size_hz > load_hz {
-                // The mass it carries, in units of its own effective mass.
-                let stiffening = (size_hz / base_hz).powi(2);
-                let carried = if g > 0.0 { load_accel / g } else { stiffening };
-                let ratio = carried.max(stiffening);
-                Softness::for_supported_mass(size_hz, s.contact_damping_ratio, h, ratio)
-            } else {
+            let omega_load = 2.0 * std::f32::consts::PI * load_hz;
+            // Most contacts settle within their budget at the load stiffness: nothing more.
+            c.softness = if load_accel <= budget * omega_load * omega_load {
                 Softness::new(load_hz, s.contact_damping_ratio, h)
+            } else {
+                let needed = Softness::size_hertz(load_accel, budget);
+                let size_hz = needed.min(max_size_hertz);
+                let used = size_hz.max(load_hz);
+                // The mass it carries, in units of its own effective mass.
+                let stiffening = (used / base_hz).powi(2);
+                let carried = if g > 0.0 { load_accel / g } else { stiffening };
+                // Deeper than the budget allows even at the stiffest contact: named once.
+                let omega = 2.0 * std::f32::consts::PI * used;
+                let depth = load_accel / (omega * omega);
+                if depth > OVERLOAD_DEPTH_FACTOR * budget
+                    && remembered > 0.0
+                    && !pair.overload_reported
+                {
+                    overloads.push((r.pair, depth, budget, needed, carried));
+                }
+                if size_hz > load_hz {
+                    Softness::for_supported_mass(
+                        size_hz,
+                        s.contact_damping_ratio,
+                        h,
+                        carried.max(stiffening),
+                    )
+                } else {
+                    Softness::new(load_hz, s.contact_damping_ratio, h)
+                }
             };
-            // Deeper than the budget allows even at the stiffest contact: named once.
-            let used = size_hz.max(load_hz);
-            let omega = 2.0 * std::f32::consts::PI * used;
-            let depth = load_accel / (omega * omega);
-            if depth > OVERLOAD_DEPTH_FACTOR * budget && remembered > 0.0 && !pair.overload_reported
-            {
-                let carried = if g > 0.0 { load_accel / g } else { ratio };
-                overloads.push((r.pair, depth, budget, needed, carried));
-            }
             PreparedManifold {
                 constraint: c,
                 points,
