@@ -456,8 +456,12 @@ fn support_mass_scale(
     dt: f32,
 ) -> [f32; 2] {
     let (ia, ib) = (a.inv_mass.max_element(), b.inv_mass.max_element());
+    // Most pairs: masses within the ratio (or a static or kinematic body), nothing to do.
+    if !(ia > ib * max_ratio || ib > ia * max_ratio) || ia == 0.0 || ib == 0.0 {
+        return [1.0; 2];
+    }
     let g = gravity.length();
-    if !(ia > 0.0 && ib > 0.0 && max_ratio >= 1.0 && g > 0.0) {
+    if !(max_ratio >= 1.0 && g > 0.0) {
         return [1.0; 2];
     }
     // Resting: not approaching faster than gravity's pull over a step (16 cm/s at 60 Hz).
