@@ -181,6 +181,7 @@ impl PhysicsWorld {
         let g_h = s.gravity.length() * h;
         self.manifold_refs.clear();
         let mut contacts = 0u32;
+        let mut bouncy = false;
         for &pi in &self.narrowphase.updated_pairs {
             let pair = &self.narrowphase.pairs[pi as usize];
             if pair.manifolds.is_empty() {
@@ -197,6 +198,7 @@ impl PhysicsWorld {
             if !sa.dynamic && !sb.dynamic {
                 continue;
             }
+            bouncy |= pair.restitution > 0.0;
             for (mi, m) in pair.manifolds.iter().enumerate() {
                 if m.points.is_empty() {
                     continue;
@@ -215,14 +217,6 @@ impl PhysicsWorld {
             }
         }
         self.output.counters.manifolds = self.manifold_refs.len() as u32;
-        // Load memory decays, then takes this step's loads (see `LOAD_MEMORY_HALF_LIFE`).
-        let decay = 0.5f32.powf(s.dt / LOAD_MEMORY_HALF_LIFE);
-        for r in &self.manifold_refs {
-            let pair = &mut self.narrowphase.pairs[r.pair as usize];
-            if r.manifold == 0 {
-                pair.load_memory *= decay;
-            }
-        }
         self.output.counters.contacts = contacts;
 
         let g = s.gravity.length();
@@ -394,6 +388,7 @@ impl PhysicsWorld {
             iterations: s.solver_iterations,
             relax_iterations: s.relax_iterations,
             max_push: s.max_contact_push_speed,
+            restitution: bouncy,
             max_linear_speed: s.max_linear_speed,
             max_angular_speed: s.max_angular_speed,
         };
@@ -404,6 +399,7 @@ impl PhysicsWorld {
             &params,
         );
 
+        let decay = 0.5f32.powf(s.dt / LOAD_MEMORY_HALF_LIFE);
         // Store impulses for warm starting and events; a manifold's friction is shared among
         // its points in proportion to their normal impulses.
         let (refs, pairs) = (&self.manifold_refs, &mut self.narrowphase.pairs);
@@ -427,7 +423,14 @@ impl PhysicsWorld {
                 p.twist_impulse = result.twist_impulse * share;
                 p.max_normal_impulse = result.max_normal_impulse[k];
             }
-            pair.load_memory = pair.load_memory.max(total);
+            // Load memory decays once per step (with the pair's first manifold), then takes
+            // this step's load (see `LOAD_MEMORY_HALF_LIFE`).
+            let kept = if c.manifold == 0 {
+                pair.load_memory * decay
+            } else {
+                pair.load_memory
+            };
+            pair.load_memory = kept.max(total);
             // Every non-empty manifold of a solved pair is solved: the pair's flag is exact.
             let pushing = m.points.iter().any(|p| p.max_normal_impulse > 0.0);
             pair.solved_pushing = Some(pair.solved_pushing == Some(true) || pushing);

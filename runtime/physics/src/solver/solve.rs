@@ -26,6 +26,8 @@ pub(crate) struct SolveParams {
     pub iterations: u32,
     pub relax_iterations: u32,
     pub max_push: f32,
+    /// Some manifold of the step has restitution (else the restitution passes are skipped).
+    pub restitution: bool,
     pub max_linear_speed: f32,
     pub max_angular_speed: f32,
 }
@@ -61,8 +63,10 @@ pub(crate) fn solve_substeps(
             batches.solve(states, relax_pass);
         }
     }
-    for _ in 0..RESTITUTION_PASSES {
-        batches.apply_restitution(states, h);
+    if p.restitution {
+        for _ in 0..RESTITUTION_PASSES {
+            batches.apply_restitution(states, h);
+        }
     }
     not_converged
 }
