@@ -53,6 +53,15 @@ impl Engine for Shifted {
     fn mass(&self, id: BodyId) -> f32 {
         self.inner.mass(id)
     }
+    fn kinetic_energy(&self, id: BodyId) -> f64 {
+        self.inner.kinetic_energy(id)
+    }
+    fn angular_momentum(&self, id: BodyId) -> f64 {
+        self.inner.angular_momentum(id)
+    }
+    fn set_restitution_threshold(&mut self, speed: f32) -> bool {
+        self.inner.set_restitution_threshold(speed)
+    }
     fn len(&self) -> usize {
         self.inner.len()
     }

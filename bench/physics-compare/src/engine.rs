@@ -129,6 +129,8 @@ pub struct BodySpec {
     pub rotation: Quat,
     /// Initial linear velocity.
     pub velocity: Vec3,
+    /// Initial angular velocity, rad/s (world axes).
+    pub angular_velocity: Vec3,
     /// Shape.
     pub shape: ShapeSpec,
     /// Density, kg/m³.
@@ -153,6 +155,7 @@ impl BodySpec {
             position,
             rotation: Quat::IDENTITY,
             velocity: Vec3::ZERO,
+            angular_velocity: Vec3::ZERO,
             shape,
             density: 1000.0,
             friction: 0.5,
@@ -184,6 +187,13 @@ impl BodySpec {
     #[must_use]
     pub fn velocity(mut self, v: Vec3) -> Self {
         self.velocity = v;
+        self
+    }
+
+    /// With this initial angular velocity.
+    #[must_use]
+    pub fn angular_velocity(mut self, w: Vec3) -> Self {
+        self.angular_velocity = w;
         self
     }
 
@@ -250,6 +260,16 @@ pub trait Engine {
     fn angular_velocity(&self, id: BodyId) -> Vec3;
     /// Mass of a body, kg (0 for fixed bodies).
     fn mass(&self, id: BodyId) -> f32;
+    /// Kinetic energy of a body (translation and rotation), J.
+    fn kinetic_energy(&self, id: BodyId) -> f64;
+    /// Size of the angular momentum of a body about its centre of mass, kg·m²/s.
+    fn angular_momentum(&self, id: BodyId) -> f64;
+    /// Sets the impact speed below which contacts do not bounce, m/s, where the engine has
+    /// such a setting (Onyx: `restitution_threshold`); rapier 0.36 has none and bounces
+    /// every impact. Returns whether the engine took it.
+    fn set_restitution_threshold(&mut self, _speed: f32) -> bool {
+        false
+    }
     /// Number of bodies.
     fn len(&self) -> usize;
     /// GJK and EPA runs, iterations and failures so far, where the engine reports them;
@@ -314,6 +334,7 @@ impl Engine for OnyxEngine {
         } else {
             RigidBodyDesc::dynamic()
                 .linvel(spec.velocity)
+                .angvel(spec.angular_velocity)
                 .ccd_enabled(spec.ccd)
                 .gravity_scale(spec.gravity_scale)
                 .can_sleep(false)
@@ -386,6 +407,26 @@ impl Engine for OnyxEngine {
         })
     }
 
+    fn kinetic_energy(&self, id: BodyId) -> f64 {
+        self.world.body(self.bodies[id]).map_or(f64::NAN, |b| {
+            let w = b.angvel();
+            f64::from(
+                0.5 * b.mass() * b.linvel().length_squared() + 0.5 * w.dot(b.world_inertia() * w),
+            )
+        })
+    }
+
+    fn angular_momentum(&self, id: BodyId) -> f64 {
+        self.world.body(self.bodies[id]).map_or(f64::NAN, |b| {
+            f64::from((b.world_inertia() * b.angvel()).length())
+        })
+    }
+
+    fn set_restitution_threshold(&mut self, speed: f32) -> bool {
+        self.world.settings_mut().restitution_threshold = speed;
+        true
+    }
+
     fn len(&self) -> usize {
         self.bodies.len()
     }
@@ -447,6 +488,7 @@ impl Engine for RapierEngine {
         } else {
             rp::RigidBodyBuilder::dynamic()
                 .linvel(rv(spec.velocity))
+                .angvel(rv(spec.angular_velocity))
                 .ccd_enabled(spec.ccd)
                 .gravity_scale(spec.gravity_scale)
                 .can_sleep(false)
@@ -505,6 +547,28 @@ impl Engine for RapierEngine {
                 0.0
             }
         })
+    }
+
+    fn kinetic_energy(&self, id: BodyId) -> f64 {
+        self.world
+            .bodies
+            .get(self.bodies[id])
+            .map_or(f64::NAN, |b| f64::from(b.kinetic_energy()))
+    }
+
+    fn angular_momentum(&self, id: BodyId) -> f64 {
+        self.world
+            .bodies
+            .get(self.bodies[id])
+            .map_or(f64::NAN, |b| {
+                // |L| in the principal frame: rotations keep lengths.
+                let mp = &b.mass_properties().local_mprops;
+                let frame = *b.rotation() * mp.principal_inertia_local_frame;
+                let w = frame.inverse() * b.angvel();
+                let i = mp.principal_inertia();
+                let l = Vec3::new(i.x * w.x, i.y * w.y, i.z * w.z);
+                f64::from(l.length())
+            })
     }
 
     fn len(&self) -> usize {

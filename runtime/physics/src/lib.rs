@@ -56,10 +56,12 @@ pub mod combine_rule; // `CombineRule`: how two materials mix.
 pub mod contact_event; // `ContactEvent`: contact started / ended.
 pub mod debug_line; // `DebugLine`: coloured segment for debug draw.
 pub mod debug_lines; // `PhysicsWorld::debug_lines`: outlines, contacts, normals.
+pub mod far_body; // `FarBody`: a moving body past the precise range of f32 (reported once).
 pub mod locked_axes; // `LockedAxes`: per-axis locks.
 pub mod mass_properties; // `MassProperties`: mass, centre of mass, inertia tensor.
 pub mod material; // `Material`: restitution and friction.
 pub mod narrowphase; // Contact generation, GJK/EPA, persistent manifolds and pairs.
+pub mod overloaded_contact; // `OverloadedContact`: a contact deeper than its budget (reported once).
 pub mod physics_preset; // `PhysicsPreset`: named accuracy profiles (fast / balanced / precise).
 pub mod physics_settings; // `PhysicsSettings`: every tunable with unit and cost.
 pub mod physics_world; // `PhysicsWorld`: owner of everything; `step()`.
@@ -68,8 +70,10 @@ pub mod pose; // `Pose`: rotation + translation.
 pub mod query; // Scene queries: ray casts, shape and AABB overlap.
 pub mod rigid_body; // `RigidBody`: state of one body.
 pub mod rigid_body_desc; // `RigidBodyDesc`: body builder.
+pub mod settings_error; // `SettingsError`: a settings field outside what can be simulated.
 pub mod shape; // Collision shapes (sphere, box, capsule, half space, hull, triangle mesh).
 pub mod solver; // Soft-step contact solver.
+pub mod speed_cap_hit; // `SpeedCapHit`: a body clamped to a speed cap (reported once).
 pub mod step_counters; // `StepCounters`: stage timings and work counts.
 pub mod step_output; // `StepOutput`: counters, events, quarantined bodies of a step.
 
@@ -84,9 +88,11 @@ pub use collider_set::ColliderSet;
 pub use combine_rule::CombineRule;
 pub use contact_event::{ContactEvent, ContactEventKind};
 pub use debug_line::DebugLine;
+pub use far_body::FarBody;
 pub use locked_axes::LockedAxes;
 pub use mass_properties::MassProperties;
 pub use material::Material;
+pub use overloaded_contact::OverloadedContact;
 pub use physics_preset::PhysicsPreset;
 pub use physics_settings::PhysicsSettings;
 pub use physics_world::PhysicsWorld;
@@ -94,6 +100,8 @@ pub use pose::Pose;
 pub use query::{QueryFilter, RayHit};
 pub use rigid_body::RigidBody;
 pub use rigid_body_desc::RigidBodyDesc;
+pub use settings_error::SettingsError;
 pub use shape::Shape;
+pub use speed_cap_hit::{SpeedCap, SpeedCapHit};
 pub use step_counters::StepCounters;
 pub use step_output::StepOutput;

@@ -75,10 +75,18 @@ impl PhysicsPreset {
     /// The full settings: the defaults with this preset's step length and substeps.
     #[must_use]
     pub fn settings(self) -> PhysicsSettings {
+        self.apply(PhysicsSettings::default())
+    }
+
+    /// `settings` with what this preset names (step length and substeps) and nothing else
+    /// changed: a preset chosen on a command line over a scene's own settings keeps the
+    /// scene's gravity, thresholds and caps.
+    #[must_use]
+    pub fn apply(self, settings: PhysicsSettings) -> PhysicsSettings {
         PhysicsSettings {
             dt: 1.0 / self.step_hz(),
             substeps: self.substeps(),
-            ..PhysicsSettings::default()
+            ..settings
         }
     }
 }
@@ -127,6 +135,21 @@ mod tests {
             PhysicsSettings::default()
         );
         assert_eq!(PhysicsPreset::default(), PhysicsPreset::Balanced);
+    }
+
+    #[test]
+    fn a_preset_over_a_scene_keeps_what_it_does_not_name() {
+        let moon = PhysicsSettings {
+            gravity: glam::Vec3::new(0.0, -1.62, 0.0),
+            restitution_threshold: 0.0,
+            max_linear_speed: 5000.0,
+            ..PhysicsSettings::default()
+        };
+        let s = PhysicsPreset::Precise.apply(moon);
+        assert_eq!(s.gravity, moon.gravity);
+        assert_eq!(s.restitution_threshold, 0.0);
+        assert_eq!(s.max_linear_speed, 5000.0);
+        assert_eq!((s.dt, s.substeps), (1.0 / 120.0, 4));
     }
 
     #[test]

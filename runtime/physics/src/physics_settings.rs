@@ -2,10 +2,16 @@
 
 use glam::Vec3;
 
+use crate::settings_error::SettingsError;
+
 /// Simulation settings. Each field states its unit, its default (the line
 /// `Default: ` is checked against [`PhysicsSettings::default`] by a test) and what
-/// too high / too low does.
+/// too high / too low does. With the `serde` feature, a partial description fills the
+/// missing fields from [`PhysicsSettings::default`]; check what was read with
+/// [`PhysicsSettings::validate`].
 #[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize, serde::Deserialize))]
+#[cfg_attr(feature = "serde", serde(default, deny_unknown_fields))]
 pub struct PhysicsSettings {
     /// Step length, seconds.
     /// Default: `1/60`
@@ -45,6 +51,25 @@ pub struct PhysicsSettings {
     /// Default: `3`
     /// Too high: deep overlaps explode apart. Too low: deep overlaps resolve slowly.
     pub max_contact_push_speed: f32,
+    /// Penetration budget of a resting contact, as a fraction of the smallest dimension of
+    /// the smaller body (a sphere's diameter, a box's shortest side). A contact whose load
+    /// would press it deeper stiffens until its static deflection fits (up to a stiffness of
+    /// one period per substep); where even that is not enough (a heavy load on a small
+    /// body at a coarse step) the contact is named in `StepOutput::overloaded_contacts`.
+    /// Default: `0.02` (two such contacts in a chain stay under 5 % of the body's size)
+    /// Too high: small bodies and heavily loaded ones visibly sink into each other. Too low:
+    /// more contacts run at the stiffness cap, where stacks and piles ring a little more.
+    pub max_penetration_fraction: f32,
+    /// Largest mass ratio a resting contact between two dynamic bodies is solved with: the
+    /// lighter body's inverse mass is scaled down in that contact so that it looks at most
+    /// this many times lighter (see the solve stage's `support_mass_scale`). Impacts use the
+    /// true masses.
+    /// Default: `10`
+    /// Too high (or 0, off): a heavy body on a light one rings into it for `√ratio`
+    /// substeps and sinks about `g·ratio·h²` (17 cm for 1000:1 at balanced). Too low: the
+    /// light body passes on visibly less of the heavy one's weight (its contact with the
+    /// ground reports less force; it slides more easily under friction).
+    pub max_support_mass_ratio: f32,
     /// Contact distance tolerance, metres: the CCD stop distance and the hysteresis for
     /// ending contact events. (The solver has no penetration dead zone: resting bodies sink
     /// only by the soft contact's static deflection, ~0.07 mm on the ground at defaults.)
@@ -67,22 +92,36 @@ pub struct PhysicsSettings {
     /// Default: `0.1`
     /// Too high: many pairs that never touch. Too low: tree updates every step.
     pub aabb_margin: f32,
-    /// Normal approach speed below which restitution is ignored, m/s.
-    /// Default: `1`
-    /// Too high: small bounces die. Too low: resting bodies never settle (micro bounces).
+    /// Impact speed (normal approach at the moment of contact, see
+    /// [`crate::solver::restitution`]) at or below which a contact does not bounce, m/s.
+    /// Approaches no faster than one substep of gravity never bounce (that is how resting
+    /// looks to the integrator), so 0 is safe: every real impact bounces.
+    /// Default: `0.1` (a ball stops bouncing once its rebounds are below 0.5 mm)
+    /// Too high: small bounces die (at 1 m/s, two e = 1 balls meeting at 0.5 m/s stick
+    /// together). Too low: bouncy bodies take longer to come to rest (each bounce is real).
     pub restitution_threshold: f32,
     /// Tangential speed below which a contact uses static friction, m/s.
     /// Default: `0.05`
     /// Too high: sliding bodies stop too early. Too low: static friction rarely applies.
     pub static_friction_speed: f32,
-    /// Speed limit, m/s.
+    /// Speed cap, m/s: a body's linear speed is clamped to it before every substep's motion.
+    /// The first time a body is clamped it is named in `StepOutput::speed_caps` (once per
+    /// body and cap), so a host can say so.
     /// Default: `1000`
     /// Too high: a blow-up can throw bodies very far. Too low: fast projectiles are slowed.
     pub max_linear_speed: f32,
-    /// Spin limit, rad/s.
+    /// Spin cap, rad/s, clamped and reported like `max_linear_speed`.
     /// Default: `200`
-    /// Too high: unstable integration of spinning bodies. Too low: spinning bodies are slowed.
+    /// Too high: a body turns by more than a radian per substep and its contacts (refreshed
+    /// once per step) lag its faces. Too low: spinning bodies are slowed.
     pub max_angular_speed: f32,
+    /// Coarsest spacing of `f32` positions the engine's accuracy holds with, metres. Moving
+    /// bodies farther from the origin than [`PhysicsSettings::precise_range`] (where the
+    /// spacing is coarser) are named once in `StepOutput::far_bodies`.
+    /// Default: `0.001` (range 16,384 m)
+    /// Too high: bodies lose slow motions to rounding (at 1e6 m the spacing is 6 cm) without
+    /// a word. Too low: warnings for worlds that are fine.
+    pub max_position_spacing: f32,
     /// Whether resting islands fall asleep.
     /// Default: `true`
     pub sleep_enabled: bool,
@@ -107,6 +146,101 @@ pub struct PhysicsSettings {
     pub grounded_min_normal_y: f32,
 }
 
+impl PhysicsSettings {
+    /// Checks every field against the values the engine can simulate: finite numbers,
+    /// positive where a rate, length or count must be, fractions in their range.
+    ///
+    /// # Errors
+    /// [`SettingsError::OutOfRange`] naming the first field that is not.
+    pub fn validate(&self) -> Result<(), SettingsError> {
+        fn check(
+            field: &'static str,
+            value: f32,
+            ok: bool,
+            expected: &'static str,
+        ) -> Result<(), SettingsError> {
+            if value.is_finite() && ok {
+                Ok(())
+            } else {
+                Err(SettingsError::OutOfRange {
+                    field,
+                    value: f64::from(value),
+                    expected,
+                })
+            }
+        }
+        let count = |field: &'static str, n: u32, min: u32| {
+            if n >= min {
+                Ok(())
+            } else {
+                Err(SettingsError::OutOfRange {
+                    field,
+                    value: f64::from(n),
+                    expected: if min == 0 { ">= 0" } else { ">= 1" },
+                })
+            }
+        };
+        let positive = |field, v: f32| check(field, v, v > 0.0, "finite and > 0");
+        let non_negative = |field, v: f32| check(field, v, v >= 0.0, "finite and >= 0");
+        positive("dt", self.dt)?;
+        for (field, g) in [
+            ("gravity.x", self.gravity.x),
+            ("gravity.y", self.gravity.y),
+            ("gravity.z", self.gravity.z),
+        ] {
+            check(field, g, true, "finite")?;
+        }
+        count("substeps", self.substeps, 1)?;
+        count("solver_iterations", self.solver_iterations, 1)?;
+        count("relax_iterations", self.relax_iterations, 0)?;
+        positive("contact_hertz", self.contact_hertz)?;
+        non_negative("contact_damping_ratio", self.contact_damping_ratio)?;
+        positive("max_contact_push_speed", self.max_contact_push_speed)?;
+        check(
+            "max_penetration_fraction",
+            self.max_penetration_fraction,
+            self.max_penetration_fraction > 0.0 && self.max_penetration_fraction < 1.0,
+            "in (0, 1)",
+        )?;
+        non_negative("max_support_mass_ratio", self.max_support_mass_ratio)?;
+        positive("linear_slop", self.linear_slop)?;
+        non_negative("speculative_distance", self.speculative_distance)?;
+        non_negative("max_speculative_distance", self.max_speculative_distance)?;
+        non_negative("aabb_margin", self.aabb_margin)?;
+        non_negative("restitution_threshold", self.restitution_threshold)?;
+        non_negative("static_friction_speed", self.static_friction_speed)?;
+        positive("max_linear_speed", self.max_linear_speed)?;
+        positive("max_angular_speed", self.max_angular_speed)?;
+        positive("max_position_spacing", self.max_position_spacing)?;
+        non_negative("sleep_linear_threshold", self.sleep_linear_threshold)?;
+        non_negative("sleep_angular_threshold", self.sleep_angular_threshold)?;
+        non_negative("time_to_sleep", self.time_to_sleep)?;
+        check(
+            "grounded_min_normal_y",
+            self.grounded_min_normal_y,
+            (-1.0..=1.0).contains(&self.grounded_min_normal_y),
+            "in [-1, 1]",
+        )?;
+        Ok(())
+    }
+
+    /// Distance from the origin, metres, within which `f32` positions are spaced at most
+    /// [`PhysicsSettings::max_position_spacing`] apart: `2^(⌊log₂ spacing⌋ + 24)` (16,384 m
+    /// for 1 mm).
+    #[must_use]
+    pub fn precise_range(&self) -> f32 {
+        if self.max_position_spacing.is_nan() || self.max_position_spacing <= 0.0 {
+            return f32::MAX;
+        }
+        let e = self.max_position_spacing.log2().floor() + 24.0;
+        if e >= 128.0 {
+            f32::MAX
+        } else {
+            e.exp2()
+        }
+    }
+}
+
 impl Default for PhysicsSettings {
     fn default() -> Self {
         Self {
@@ -118,14 +252,17 @@ impl Default for PhysicsSettings {
             contact_hertz: 32.0,
             contact_damping_ratio: 5.0,
             max_contact_push_speed: 3.0,
+            max_penetration_fraction: 0.02,
+            max_support_mass_ratio: 10.0,
             linear_slop: 0.001,
             speculative_distance: 0.02,
             max_speculative_distance: 0.5,
             aabb_margin: 0.1,
-            restitution_threshold: 1.0,
+            restitution_threshold: 0.1,
             static_friction_speed: 0.05,
             max_linear_speed: 1000.0,
             max_angular_speed: 200.0,
+            max_position_spacing: 0.001,
             sleep_enabled: true,
             sleep_linear_threshold: 0.05,
             sleep_angular_threshold: 0.1,

@@ -62,6 +62,10 @@ pub struct PhysicsWorld {
     pub(crate) deepest_contact: Vec<(f32, Vec3, bool)>,
     pub(crate) wake: Vec<BodyHandle>,
     pub(crate) islands: HashMap<u32, Vec<BodyHandle>>,
+    /// Scratch of the write-back: each solver body's pose at the end of the step.
+    pub(crate) end_poses: Vec<crate::pose::Pose>,
+    /// Scratch of the write-back: (solver index, fraction of the step, carry) for CCD hits.
+    pub(crate) ccd_clamps: Vec<(u32, f32, Vec3)>,
     pub(crate) next_island: u32,
     pub(crate) time: f64,
 }
@@ -119,6 +123,8 @@ impl PhysicsWorld {
             report_pairs: Vec::new(),
             wake: Vec::new(),
             islands: HashMap::new(),
+            end_poses: Vec::new(),
+            ccd_clamps: Vec::new(),
             next_island: 0,
             time: 0.0,
         }
@@ -297,6 +303,9 @@ impl PhysicsWorld {
         self.output.events.clear();
         self.output.events.append(&mut self.pending_events);
         self.output.quarantined.clear();
+        self.output.speed_caps.clear();
+        self.output.overloaded_contacts.clear();
+        self.output.far_bodies.clear();
         self.output.counters = Default::default();
         if !(self.settings.dt > 0.0 && self.settings.dt.is_finite()) {
             return &self.output;

@@ -49,6 +49,22 @@ pub struct RigidBody {
     pub(crate) island: u32,
     /// Pose at the start of the current step (rollback target for quarantine).
     pub(crate) last_good_pose: Pose,
+    /// Body-frame angular velocity of a freely rotating body, and the world angular
+    /// velocity and orientation it was taken with: valid while both are unchanged (see
+    /// `SolverBody::omega_body`).
+    pub(crate) spin_cache: Option<SpinCache>,
+    /// Speed caps already reported for this body (`SolverBody::capped` bits).
+    pub(crate) caps_reported: u8,
+    /// Already named in `StepOutput::far_bodies`.
+    pub(crate) far_reported: bool,
+}
+
+/// See [`RigidBody::spin_cache`].
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) struct SpinCache {
+    pub world: Vec3,
+    pub rotation: Quat,
+    pub body: Vec3,
 }
 
 impl RigidBody {

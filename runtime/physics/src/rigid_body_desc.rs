@@ -205,6 +205,9 @@ impl RigidBodyDesc {
             solver_index: 0,
             island: u32::MAX,
             last_good_pose: self.pose,
+            spin_cache: None,
+            caps_reported: 0,
+            far_reported: false,
         };
         b.update_inverse_mass();
         b

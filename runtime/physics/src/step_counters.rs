@@ -47,6 +47,11 @@ pub struct StepCounters {
     pub ccd_hits: u32,
     /// CCD searches that hit their iteration cap.
     pub ccd_not_converged: u32,
+    /// Free-rotation (midpoint) solves that hit their iteration cap, summed over substeps.
+    pub gyro_not_converged: u32,
+    /// Bodies clamped to a speed cap this step (every time; `StepOutput::speed_caps` names
+    /// each body and cap once).
+    pub speed_capped: u32,
     /// Islands put to sleep this step.
     pub islands_slept: u32,
     /// Bodies quarantined this step.

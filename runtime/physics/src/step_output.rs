@@ -2,6 +2,9 @@
 
 use crate::body_handle::BodyHandle;
 use crate::contact_event::ContactEvent;
+use crate::far_body::FarBody;
+use crate::overloaded_contact::OverloadedContact;
+use crate::speed_cap_hit::SpeedCapHit;
 use crate::step_counters::StepCounters;
 
 /// What [`crate::PhysicsWorld::step`] returns; valid until the next step.
@@ -13,4 +16,10 @@ pub struct StepOutput {
     pub events: Vec<ContactEvent>,
     /// Bodies whose state went non-finite this step: rolled back, disabled.
     pub quarantined: Vec<BodyHandle>,
+    /// Bodies clamped to a speed cap for the first time (once per body and cap, ever).
+    pub speed_caps: Vec<SpeedCapHit>,
+    /// Contacts first found deeper than their penetration budget (once per pair).
+    pub overloaded_contacts: Vec<OverloadedContact>,
+    /// Moving bodies first found past `PhysicsSettings::precise_range` (once per body).
+    pub far_bodies: Vec<FarBody>,
 }

@@ -43,6 +43,8 @@ fn documented_defaults_equal_default_impl() {
                 "contact_hertz" => parse_num(&doc) == d.contact_hertz,
                 "contact_damping_ratio" => parse_num(&doc) == d.contact_damping_ratio,
                 "max_contact_push_speed" => parse_num(&doc) == d.max_contact_push_speed,
+                "max_penetration_fraction" => parse_num(&doc) == d.max_penetration_fraction,
+                "max_support_mass_ratio" => parse_num(&doc) == d.max_support_mass_ratio,
                 "linear_slop" => parse_num(&doc) == d.linear_slop,
                 "speculative_distance" => parse_num(&doc) == d.speculative_distance,
                 "max_speculative_distance" => parse_num(&doc) == d.max_speculative_distance,
@@ -51,6 +53,7 @@ fn documented_defaults_equal_default_impl() {
                 "static_friction_speed" => parse_num(&doc) == d.static_friction_speed,
                 "max_linear_speed" => parse_num(&doc) == d.max_linear_speed,
                 "max_angular_speed" => parse_num(&doc) == d.max_angular_speed,
+                "max_position_spacing" => parse_num(&doc) == d.max_position_spacing,
                 "sleep_enabled" => doc.parse::<bool>().unwrap() == d.sleep_enabled,
                 "sleep_linear_threshold" => parse_num(&doc) == d.sleep_linear_threshold,
                 "sleep_angular_threshold" => parse_num(&doc) == d.sleep_angular_threshold,
@@ -66,5 +69,32 @@ fn documented_defaults_equal_default_impl() {
             checked += 1;
         }
     }
-    assert_eq!(checked, 22, "every settings field checked");
+    assert_eq!(checked, 25, "every settings field checked");
+}
+
+#[test]
+fn the_defaults_and_every_preset_validate() {
+    use onyx_physics::PhysicsPreset;
+    assert_eq!(PhysicsSettings::default().validate(), Ok(()));
+    for p in PhysicsPreset::ALL {
+        assert_eq!(p.settings().validate(), Ok(()), "{p}");
+    }
+}
+
+#[test]
+fn a_bad_field_is_named_with_its_value() {
+    let s = PhysicsSettings {
+        max_penetration_fraction: 1.5,
+        ..Default::default()
+    };
+    let e = s.validate().expect_err("1.5 is not a fraction");
+    assert_eq!(
+        e.to_string(),
+        "physics.max_penetration_fraction must be in (0, 1), got 1.5"
+    );
+    let s = PhysicsSettings {
+        dt: f32::NAN,
+        ..Default::default()
+    };
+    assert!(s.validate().is_err());
 }

@@ -13,16 +13,22 @@ pub mod bounce;
 pub mod degenerate_hulls;
 pub mod far_origin;
 pub mod free_fall;
+pub mod frictionless_stacks;
 pub mod incline;
 pub mod long_run;
 pub mod mass_ratio;
+pub mod mass_ratio_ladder;
 pub mod poured_spheres;
 pub mod pyramid;
+pub mod restitution_ladder;
 pub mod rolling;
+pub mod rotation_energy;
+pub mod size_ladder;
 pub mod sliding;
 pub mod stack;
 pub mod tiny_huge;
 pub mod tunneling;
+pub mod wide_wall_ccd;
 
 /// Problem size: `Quick` for the smoke path, `Full` for the real comparison.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -91,6 +97,12 @@ pub fn all() -> Vec<&'static dyn Scene> {
         &big_pyramid::BigPyramid,
         &poured_spheres::PouredSpheres,
         &degenerate_hulls::DegenerateHulls,
+        &rotation_energy::RotationEnergy,
+        &wide_wall_ccd::WideWallCcd,
+        &restitution_ladder::RestitutionLadder,
+        &mass_ratio_ladder::MassRatioLadder,
+        &size_ladder::SizeLadder,
+        &frictionless_stacks::FrictionlessStacks,
     ]
 }
 

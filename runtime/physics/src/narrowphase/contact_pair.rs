@@ -44,6 +44,15 @@ pub struct ContactPair {
     /// linearised separation follows exactly within the step (no lever arm turns it), so
     /// its contact may stiffen further with load (see `Softness::max_ball_load_hertz`).
     pub(crate) ball_ball: bool,
+    /// Smallest dimension of the smaller collider, metres (`f32::MAX` when neither is
+    /// finite): the scale of the penetration the pair's contact may settle at.
+    pub(crate) size: f32,
+    /// The pair was named in `StepOutput::overloaded_contacts` (once per pair).
+    pub(crate) overload_reported: bool,
+    /// Largest per-substep normal impulse a manifold of the pair carried recently, N·s,
+    /// decaying with half-life `solver::softness::LOAD_MEMORY_HALF_LIFE`: the load its
+    /// contact stiffens for (a bounce that unloads it for a step keeps it stiff).
+    pub(crate) load_memory: f32,
 }
 
 /// Poses a pair's manifolds were generated at, which reuse is measured against.

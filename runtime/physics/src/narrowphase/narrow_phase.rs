@@ -105,6 +105,7 @@ impl NarrowPhase {
     }
 
     /// Adds a pair unless it exists. Returns true when added.
+    #[allow(clippy::too_many_arguments)]
     pub(crate) fn add_pair(
         &mut self,
         ca: ColliderHandle,
@@ -113,6 +114,7 @@ impl NarrowPhase {
         bb: BodyHandle,
         ma: &Material,
         mb: &Material,
+        size: f32,
     ) -> bool {
         let k = key(ca, cb);
         if self.index.contains_key(&k) {
@@ -135,6 +137,9 @@ impl NarrowPhase {
             solved_pushing: None,
             generated_at: None,
             ball_ball: false,
+            size,
+            overload_reported: false,
+            load_memory: 0.0,
         });
         true
     }
@@ -332,14 +337,16 @@ impl NarrowPhase {
                 rotation: rel.1,
                 rotation_a: rot_a,
             });
-            let pa = Pose::new(
-                rot_a * ca.local_pose.translation,
-                rot_a * ca.local_pose.rotation,
-            );
-            let pb = Pose::new(
-                d_ab + rot_b * cb.local_pose.translation,
-                rot_b * cb.local_pose.rotation,
-            );
+            // The pair is computed about the smaller collider's centre: f32 coordinates there
+            // are fine whatever the size of the other (a bullet 4 km from the centre of a
+            // 10 km wall got its separation to the millimetre only).
+            let centre_a = rot_a * ca.local_pose.translation;
+            let centre_b = d_ab + rot_b * cb.local_pose.translation;
+            let smaller_b =
+                cb.aabb.half_extents().max_element() < ca.aabb.half_extents().max_element();
+            let shift = if smaller_b { centre_b } else { centre_a };
+            let pa = Pose::new(centre_a - shift, rot_a * ca.local_pose.rotation);
+            let pb = Pose::new(centre_b - shift, rot_b * cb.local_pose.rotation);
             self.raw.clear();
             collide(
                 &ca.shape,
@@ -351,6 +358,13 @@ impl NarrowPhase {
                 stats,
                 &mut self.scratch,
             );
+            if shift != Vec3::ZERO {
+                for rm in &mut self.raw {
+                    for rp in &mut rm.points {
+                        rp.point += shift;
+                    }
+                }
+            }
             let frame = PointFrame::new(ba, bb, inv_a, d_ab);
             let pair = &mut self.pairs[i];
             self.old.clear();

@@ -33,10 +33,15 @@ impl PhysicsWorld {
             }
             let ha = self.colliders.handle_of(ia);
             let hb = self.colliders.handle_of(ib);
-            if self
-                .narrowphase
-                .add_pair(ha, hb, ca.parent, cb.parent, &ca.material, &cb.material)
-            {
+            if self.narrowphase.add_pair(
+                ha,
+                hb,
+                ca.parent,
+                cb.parent,
+                &ca.material,
+                &cb.material,
+                ca.shape.size().min(cb.shape.size()),
+            ) {
                 added += 1;
             }
         }

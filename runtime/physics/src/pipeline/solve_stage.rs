@@ -5,6 +5,8 @@ use glam::{Vec3, Vec3A};
 use crate::body_type::BodyType;
 use crate::locked_axes::LockedAxes;
 use crate::narrowphase::narrow_phase::is_active;
+use crate::overloaded_contact::OverloadedContact;
+use crate::physics_preset::PhysicsPreset;
 use crate::physics_world::PhysicsWorld;
 use crate::physics_world::SolverSlot;
 use crate::rigid_body::mask_mat;
@@ -14,11 +16,53 @@ use crate::solver::contact_constraint::{
     PreparedManifold,
 };
 use crate::solver::noise::matrix_without_noise;
+use crate::solver::restitution::bounce_velocity;
+use crate::solver::softness::LOAD_MEMORY_HALF_LIFE;
 use crate::solver::solve::{solve_substeps, SolveParams};
 use crate::solver::solver_body::SolverBody;
 use crate::solver::Softness;
 
+/// A contact is reported overloaded when it settles deeper than this many times its
+/// penetration budget (`PhysicsSettings::max_penetration_fraction` of the smaller body's
+/// size): a contact at the budget is what the setting asks for, twice is what a user sees.
+pub const OVERLOAD_DEPTH_FACTOR: f32 = 2.0;
+
 impl PhysicsWorld {
+    /// Names each overloaded pair once in the step output, with the cheapest preset whose
+    /// step would hold it (`needed`, Hz, within that preset's stiffness cap).
+    fn report_overloads(&mut self, overloads: &[(u32, f32, f32, f32, f32)]) {
+        for &(pi, depth, budget, needed, load_ratio) in overloads {
+            let Some(pair) = self.narrowphase.pairs.get_mut(pi as usize) else {
+                continue;
+            };
+            if pair.overload_reported {
+                continue;
+            }
+            pair.overload_reported = true;
+            let mass = |h| {
+                self.bodies
+                    .get(h)
+                    .map(|b: &crate::rigid_body::RigidBody| b.mass())
+                    .unwrap_or(0.0)
+            };
+            let (ma, mb) = (mass(pair.body_a), mass(pair.body_b));
+            let mass_ratio = (ma > 0.0 && mb > 0.0).then(|| ma.max(mb) / ma.min(mb));
+            let holding_preset = PhysicsPreset::ALL.into_iter().find(|p| {
+                let dt = 1.0 / p.step_hz();
+                needed <= Softness::max_size_hertz(dt / p.substeps() as f32, dt)
+            });
+            self.output.overloaded_contacts.push(OverloadedContact {
+                body_a: pair.body_a,
+                body_b: pair.body_b,
+                load_ratio,
+                mass_ratio,
+                expected_depth: depth,
+                allowed_depth: budget,
+                holding_preset,
+            });
+        }
+    }
+
     pub(crate) fn solve_stage(&mut self) {
         let s = self.settings;
         let substeps = s.substeps.max(1);
@@ -93,6 +137,13 @@ impl PhysicsWorld {
                     Vec3A::ZERO
                 },
             });
+            let gyro = dynamic && b.anisotropic && b.locked.0 & LockedAxes::ALL_ROTATIONS.0 == 0;
+            let (omega_body, omega_world) = match b.spin_cache {
+                Some(c) if gyro && c.world == b.angvel && c.rotation == b.pose.rotation => {
+                    (c.body, Vec3A::from(c.world))
+                }
+                _ => (Vec3::ZERO, Vec3A::NAN),
+            };
             self.solver_bodies.push(SolverBody {
                 dq: glam::Quat::IDENTITY,
                 inv_i: mask_mat(inv_i, ang_mask),
@@ -113,8 +164,10 @@ impl PhysicsWorld {
                 ang_mask: (if dynamic { ang_mask } else { Vec3::ONE }).into(),
                 q0: b.pose.rotation,
                 inertia_local: b.mass.inertia,
-                inv_inertia_local: b.inv_inertia_local,
-                gyro: dynamic && b.anisotropic && b.locked.0 & 56 == 0,
+                omega_body,
+                omega_world,
+                capped: 0,
+                gyro,
             });
         }
         self.output.counters.awake_bodies = (self.solver_bodies.len() - 1) as u32;
@@ -124,9 +177,11 @@ impl PhysicsWorld {
         let hertz = s.contact_hertz.min(0.25 / h);
         let max_hertz = Softness::max_load_hertz(h, s.dt);
         let max_ball_hertz = Softness::max_ball_load_hertz(h, s.dt);
+        let max_size_hertz = Softness::max_size_hertz(h, s.dt);
         let g_h = s.gravity.length() * h;
         self.manifold_refs.clear();
         let mut contacts = 0u32;
+        let mut bouncy = false;
         for &pi in &self.narrowphase.updated_pairs {
             let pair = &self.narrowphase.pairs[pi as usize];
             if pair.manifolds.is_empty() {
@@ -143,6 +198,7 @@ impl PhysicsWorld {
             if !sa.dynamic && !sb.dynamic {
                 continue;
             }
+            bouncy |= pair.restitution > 0.0;
             for (mi, m) in pair.manifolds.iter().enumerate() {
                 if m.points.is_empty() {
                     continue;
@@ -163,12 +219,21 @@ impl PhysicsWorld {
         self.output.counters.manifolds = self.manifold_refs.len() as u32;
         self.output.counters.contacts = contacts;
 
+        let g = s.gravity.length();
+        let mass_of = |st: &BodyState| {
+            let inv = st.inv_mass.max_element();
+            if inv > 0.0 {
+                1.0 / inv
+            } else {
+                0.0
+            }
+        };
         let (pairs, bodies, states) = (
             &self.narrowphase.pairs,
             &self.solver_bodies,
             &self.solver_states,
         );
-        let prepare_one = |r: &ManifoldRef| {
+        let prepare_one = |r: &ManifoldRef, overloads: &mut Vec<(u32, f32, f32, f32, f32)>| {
             let pair = &pairs[r.pair as usize];
             let m = &pair.manifolds[r.manifold as usize];
             let n = m.normal;
@@ -182,6 +247,15 @@ impl PhysicsWorld {
                 normal: n.into(),
                 tangent: [t1.into(), t2.into()],
                 restitution: pair.restitution,
+                bounce_accel: 0.0,
+                mass_scale: support_mass_scale(
+                    &states[r.body_a as usize],
+                    &states[r.body_b as usize],
+                    n,
+                    s.gravity,
+                    s.max_support_mass_ratio,
+                    s.dt,
+                ),
                 softness: Softness::RIGID,
                 count: r.count,
                 friction: FrictionPart::default(),
@@ -210,25 +284,103 @@ impl PhysicsWorld {
                 pair.dynamic_friction,
                 s.static_friction_speed,
             );
-            // Static contacts are twice as stiff (Box2D v3); both stiffen with load.
+            if pair.restitution > 0.0 {
+                // Relative normal acceleration (gravity, forces) for the impact speed.
+                let accel = n.dot(Vec3::from(
+                    bodies[r.body_b as usize].lin_acc - bodies[r.body_a as usize].lin_acc,
+                ));
+                c.bounce_accel = accel;
+                for cp in &mut points[..count] {
+                    cp.bounce_velocity = bounce_velocity(
+                        cp.relative_velocity,
+                        cp.base_separation,
+                        accel,
+                        h,
+                        pair.restitution,
+                        s.restitution_threshold,
+                    )
+                    .unwrap_or(f32::NAN);
+                }
+            }
+            // Static contacts are twice as stiff (Box2D v3); both stiffen with load, and
+            // further where the load would press them deeper than the penetration budget
+            // of the smaller body's size.
             let base_hz = if r.writes == 3 { hertz } else { 2.0 * hertz };
-            let (load, own) = points[..count].iter().fold((0.0f32, 0.0f32), |(p, m), cp| {
-                (p + cp.normal_impulse, m + cp.normal_mass * g_h)
+            let (load, mass) = points[..count].iter().fold((0.0f32, 0.0f32), |(p, m), cp| {
+                (p + cp.normal_impulse, m + cp.normal_mass)
             });
+            let own = mass * g_h;
             let ratio = if own > 0.0 { load / own } else { 1.0 };
             let cap = if pair.ball_ball {
                 max_ball_hertz
             } else {
                 max_hertz
             };
-            c.softness = Softness::for_load(base_hz, ratio, cap, s.contact_damping_ratio, h);
+            // The load: the largest it carried recently, and from the step it is made at
+            // least the weight of the body on top (its warm-started load lags by steps, and
+            // a contact under a heavy body sinks meanwhile).
+            let remembered = load.max(pair.load_memory);
+            let upper = if s.gravity.dot(n) < 0.0 {
+                r.body_b
+            } else {
+                r.body_a
+            };
+            let touching = points[..count]
+                .iter()
+                .any(|cp| cp.base_separation <= s.linear_slop);
+            let weight = if touching {
+                g * mass_of(&states[upper as usize])
+            } else {
+                0.0
+            };
+            let load_accel = if mass > 0.0 {
+                (remembered / (mass * h)).max(weight / mass)
+            } else {
+                0.0
+            };
+            let budget = s.max_penetration_fraction * pair.size;
+            let load_hz = Softness::load_hertz(base_hz, ratio, cap);
+            let omega_load = 2.0 * std::f32::consts::PI * load_hz;
+            // Most contacts settle within their budget at the load stiffness: nothing more.
+            c.softness = if load_accel <= budget * omega_load * omega_load {
+                Softness::new(load_hz, s.contact_damping_ratio, h)
+            } else {
+                let needed = Softness::size_hertz(load_accel, budget);
+                let size_hz = needed.min(max_size_hertz);
+                let used = size_hz.max(load_hz);
+                // The mass it carries, in units of its own effective mass.
+                let stiffening = (used / base_hz).powi(2);
+                let carried = if g > 0.0 { load_accel / g } else { stiffening };
+                // Deeper than the budget allows even at the stiffest contact: named once.
+                let omega = 2.0 * std::f32::consts::PI * used;
+                let depth = load_accel / (omega * omega);
+                if depth > OVERLOAD_DEPTH_FACTOR * budget
+                    && remembered > 0.0
+                    && !pair.overload_reported
+                {
+                    overloads.push((r.pair, depth, budget, needed, carried));
+                }
+                if size_hz > load_hz {
+                    Softness::for_supported_mass(
+                        size_hz,
+                        s.contact_damping_ratio,
+                        h,
+                        carried.max(stiffening),
+                    )
+                } else {
+                    Softness::new(load_hz, s.contact_damping_ratio, h)
+                }
+            };
             PreparedManifold {
                 constraint: c,
                 points,
             }
         };
+        let mut overloads: Vec<(u32, f32, f32, f32, f32)> = Vec::new();
+        let prepare_one = |r: &ManifoldRef| prepare_one(r, &mut overloads);
         self.contact_batches
             .build(&self.manifold_refs, states, prepare_one);
+        self.report_overloads(&overloads);
 
         let params = SolveParams {
             dt: s.dt,
@@ -236,17 +388,18 @@ impl PhysicsWorld {
             iterations: s.solver_iterations,
             relax_iterations: s.relax_iterations,
             max_push: s.max_contact_push_speed,
-            restitution_threshold: s.restitution_threshold,
+            restitution: bouncy,
             max_linear_speed: s.max_linear_speed,
             max_angular_speed: s.max_angular_speed,
         };
-        solve_substeps(
+        self.output.counters.gyro_not_converged = solve_substeps(
             &mut self.solver_bodies,
             &mut self.solver_states,
             &mut self.contact_batches,
             &params,
         );
 
+        let decay = 0.5f32.powf(s.dt / LOAD_MEMORY_HALF_LIFE);
         // Store impulses for warm starting and events; a manifold's friction is shared among
         // its points in proportion to their normal impulses.
         let (refs, pairs) = (&self.manifold_refs, &mut self.narrowphase.pairs);
@@ -270,9 +423,59 @@ impl PhysicsWorld {
                 p.twist_impulse = result.twist_impulse * share;
                 p.max_normal_impulse = result.max_normal_impulse[k];
             }
+            // Load memory decays once per step (with the pair's first manifold), then takes
+            // this step's load (see `LOAD_MEMORY_HALF_LIFE`).
+            let kept = if c.manifold == 0 {
+                pair.load_memory * decay
+            } else {
+                pair.load_memory
+            };
+            pair.load_memory = kept.max(total);
             // Every non-empty manifold of a solved pair is solved: the pair's flag is exact.
             let pushing = m.points.iter().any(|p| p.max_normal_impulse > 0.0);
             pair.solved_pushing = Some(pair.solved_pushing == Some(true) || pushing);
         });
+    }
+}
+
+/// Inverse-mass factors for a contact in which a dynamic body rests on one more than
+/// `max_ratio` times lighter (the heavy one above it along gravity, the two approaching
+/// slower than gravity's pull over one step): the light body's inverse mass and inertia are
+/// scaled so that the contact sees at most `max_ratio`.
+///
+/// Gauss–Seidel with warm starting builds a contact's impulse by about the light body's
+/// momentum per substep, so a body `r` times heavier is caught only after `√r` substeps of
+/// ringing: it sinks about `g·r·h²` (17 cm for 1000:1 at 240 Hz), whatever the contact's
+/// stiffness. Seen at `max_ratio`, the ringing is `√(r / max_ratio)` times shorter. The
+/// light body then passes on less of the heavy one's weight than it carries (its own
+/// support holds less than the full load), so this is kept to a heavy body resting on a
+/// light one: impacts, and light bodies on heavy ones, use the true masses.
+fn support_mass_scale(
+    a: &BodyState,
+    b: &BodyState,
+    n: Vec3,
+    gravity: Vec3,
+    max_ratio: f32,
+    dt: f32,
+) -> [f32; 2] {
+    let (ia, ib) = (a.inv_mass.max_element(), b.inv_mass.max_element());
+    // Most pairs: masses within the ratio (or a static or kinematic body), nothing to do.
+    if !(ia > ib * max_ratio || ib > ia * max_ratio) || ia == 0.0 || ib == 0.0 {
+        return [1.0; 2];
+    }
+    let g = gravity.length();
+    if !(max_ratio >= 1.0 && g > 0.0) {
+        return [1.0; 2];
+    }
+    // Resting: not approaching faster than gravity's pull over a step (16 cm/s at 60 Hz).
+    let approach = (Vec3::from(b.v) - Vec3::from(a.v)).dot(n);
+    let b_above = gravity.dot(n) < 0.0;
+    // The light body (larger inverse mass) must be the lower one.
+    if b_above && ia > ib * max_ratio && approach > -g * dt {
+        [ib * max_ratio / ia, 1.0]
+    } else if !b_above && ib > ia * max_ratio && approach > -g * dt {
+        [1.0, ia * max_ratio / ib]
+    } else {
+        [1.0; 2]
     }
 }

@@ -1,21 +1,135 @@
 //! Write-back stage: commit solver motion to bodies (with CCD clamping and NaN quarantine),
 //! clear forces, refresh bounds.
+//!
+//! Three passes: every awake body's end pose from the solver; then CCD for the bodies that
+//! ask for it, against every other body's motion over the step (static, kinematic and
+//! dynamic alike, see [`super::ccd`]); then the poses are committed.
 
 use std::time::Instant;
 
 use glam::Vec3;
 
-use super::ccd::sweep_body;
+use super::ccd::{sweep_body, BodyMotion};
+use crate::body_handle::BodyHandle;
 use crate::body_type::BodyType;
+use crate::far_body::FarBody;
 use crate::physics_world::PhysicsWorld;
 use crate::pose::{unit_rotation, Pose};
+use crate::rigid_body::SpinCache;
+use crate::solver::solver_body::{CAPPED_ANGULAR, CAPPED_LINEAR};
+use crate::speed_cap_hit::{SpeedCap, SpeedCapHit};
 
 impl PhysicsWorld {
     pub(crate) fn writeback_stage(&mut self) {
         let s = self.settings;
         let mut bad = Vec::new();
         let mut ccd_time = std::time::Duration::ZERO;
-        for k in 1..self.solver_bodies.len() {
+        // Pass 1: end poses (index 0 unused).
+        let n = self.solver_bodies.len();
+        self.end_poses.clear();
+        self.end_poses.push(Pose::IDENTITY);
+        for k in 1..n {
+            let sb = &self.solver_bodies[k];
+            let st = &self.solver_states[k];
+            let pose = match self.bodies.arena.get_by_index(self.solver_handles[k]) {
+                Some(b) => {
+                    let com0 = b.pose.transform_point(b.mass.local_com);
+                    let rot = unit_rotation(sb.dq * sb.q0);
+                    let com = com0 + Vec3::from(st.dp);
+                    match b.kinematic_target {
+                        Some(t) if b.body_type == BodyType::Kinematic => t,
+                        _ => Pose::new(com - rot * b.mass.local_com, rot),
+                    }
+                }
+                None => Pose::IDENTITY,
+            };
+            self.end_poses.push(pose);
+        }
+        // Largest displacement of any body, computed once the first CCD body is met.
+        let mut max_move: Option<f32> = None;
+        // Pass 2: CCD, from the start poses (still in the bodies) to the end poses.
+        self.ccd_clamps.clear();
+        if s.ccd_enabled {
+            let (bodies, end_poses) = (&self.bodies, &self.end_poses);
+            let motion_of = |h: BodyHandle| -> Option<BodyMotion> {
+                let b = bodies.get(h)?;
+                let k = b.solver_index as usize;
+                Some(if k != 0 && k < end_poses.len() {
+                    BodyMotion::between(&b.pose, &end_poses[k], b.mass.local_com)
+                } else {
+                    BodyMotion::fixed(&b.pose, b.mass.local_com)
+                })
+            };
+            for k in 1..n {
+                let idx = self.solver_handles[k];
+                let Some(b) = self.bodies.arena.get_by_index(idx) else {
+                    continue;
+                };
+                if !(b.ccd_enabled && b.body_type == BodyType::Dynamic) {
+                    continue;
+                }
+                let end = &self.end_poses[k];
+                if !(end.is_finite() && b.pose.is_finite()) {
+                    continue;
+                }
+                let t0 = Instant::now();
+                let others_move = *max_move.get_or_insert_with(|| {
+                    (1..n)
+                        .filter_map(|j| {
+                            let o = self.bodies.arena.get_by_index(self.solver_handles[j])?;
+                            let com0 = o.pose.transform_point(o.mass.local_com);
+                            Some(
+                                end_poses[j]
+                                    .transform_point(o.mass.local_com)
+                                    .distance(com0),
+                            )
+                        })
+                        .fold(0.0f32, f32::max)
+                });
+                let motion = BodyMotion::between(&b.pose, end, b.mass.local_com);
+                let sweep = sweep_body(
+                    &self.colliders,
+                    &self.bodies,
+                    &self.broadphase,
+                    self.bodies.handle_of(idx),
+                    &motion,
+                    s.linear_slop,
+                    others_move,
+                    &motion_of,
+                );
+                if sweep.not_converged {
+                    self.output.counters.ccd_not_converged += 1;
+                }
+                if let (true, Some(hit)) = (sweep.t < 1.0, sweep.hit) {
+                    // A body hit by this one keeps moving unless it is clamped too (dynamic
+                    // with CCD): carry this one along for the rest of the step, so that a
+                    // wall moving into a bullet does not pass it after the impact.
+                    let carry = match self.bodies.get(hit) {
+                        Some(o) if !(o.ccd_enabled && o.body_type == BodyType::Dynamic) => {
+                            motion_of(hit).map_or(Vec3::ZERO, |m| m.displacement())
+                                * (1.0 - sweep.t)
+                        }
+                        _ => Vec3::ZERO,
+                    };
+                    self.ccd_clamps.push((k as u32, sweep.t, carry));
+                    self.output.counters.ccd_hits += 1;
+                }
+                ccd_time += t0.elapsed();
+            }
+            for &(k, t, carry) in &self.ccd_clamps {
+                let k = k as usize;
+                let Some(b) = self.bodies.arena.get_by_index(self.solver_handles[k]) else {
+                    continue;
+                };
+                let motion = BodyMotion::between(&b.pose, &self.end_poses[k], b.mass.local_com);
+                let mut pose = motion.pose_at(t, Vec3::ZERO);
+                pose.translation += carry;
+                self.end_poses[k] = pose;
+            }
+        }
+        // Pass 3: commit.
+        let range = s.precise_range();
+        for k in 1..n {
             let sb = self.solver_bodies[k];
             let st = self.solver_states[k];
             let idx = self.solver_handles[k];
@@ -23,52 +137,54 @@ impl PhysicsWorld {
             let Some(b) = self.bodies.arena.get_by_index_mut(idx) else {
                 continue;
             };
-            let com0 = b.pose.transform_point(b.mass.local_com);
-            let rot = unit_rotation(sb.dq * sb.q0);
-            let com = com0 + Vec3::from(st.dp);
-            let finite = com.is_finite() && rot.is_finite() && st.v.is_finite() && st.w.is_finite();
+            let pose = self.end_poses[k];
+            let finite = pose.is_finite() && st.v.is_finite() && st.w.is_finite();
             if !finite {
                 bad.push(handle);
                 continue;
             }
-            let mut pose = Pose::new(com - rot * b.mass.local_com, rot);
+            if sb.capped != 0 {
+                self.output.counters.speed_capped += 1;
+                let new = sb.capped & !b.caps_reported;
+                b.caps_reported |= sb.capped;
+                for (bit, cap, limit) in [
+                    (CAPPED_LINEAR, SpeedCap::Linear, s.max_linear_speed),
+                    (CAPPED_ANGULAR, SpeedCap::Angular, s.max_angular_speed),
+                ] {
+                    if new & bit != 0 {
+                        self.output.speed_caps.push(SpeedCapHit {
+                            body: handle,
+                            cap,
+                            limit,
+                        });
+                    }
+                }
+            }
+            if !b.far_reported {
+                let distance = pose.translation.abs().max_element();
+                if distance > range {
+                    b.far_reported = true;
+                    self.output.far_bodies.push(FarBody {
+                        body: handle,
+                        distance,
+                        range,
+                    });
+                }
+            }
             b.linvel = st.v.into();
             b.angvel = st.w.into();
-            if b.body_type == BodyType::Kinematic {
-                if let Some(t) = b.kinematic_target.take() {
-                    pose = t;
-                    b.linvel = Vec3::ZERO;
-                    b.angvel = Vec3::ZERO;
-                }
+            if b.body_type == BodyType::Kinematic && b.kinematic_target.take().is_some() {
+                b.linvel = Vec3::ZERO;
+                b.angvel = Vec3::ZERO;
             }
             let ccd_on = s.ccd_enabled && b.ccd_enabled && b.body_type == BodyType::Dynamic;
-            let start_pose = b.pose;
-            if ccd_on {
-                let t0 = Instant::now();
-                let (t, not_converged) = sweep_body(
-                    &self.colliders,
-                    &self.bodies,
-                    &self.broadphase,
-                    handle,
-                    &start_pose,
-                    &pose,
-                    &s,
-                );
-                if not_converged {
-                    self.output.counters.ccd_not_converged += 1;
-                }
-                if t < 1.0 {
-                    pose.translation =
-                        start_pose.translation + (pose.translation - start_pose.translation) * t;
-                    self.output.counters.ccd_hits += 1;
-                }
-                ccd_time += t0.elapsed();
-            }
-            let Some(b) = self.bodies.arena.get_by_index_mut(idx) else {
-                continue;
-            };
             b.pose = pose;
             b.last_good_pose = pose;
+            b.spin_cache = (sb.gyro && sb.omega_world == st.w).then_some(SpinCache {
+                world: b.angvel,
+                rotation: pose.rotation,
+                body: sb.omega_body,
+            });
             b.force = Vec3::ZERO;
             b.torque = Vec3::ZERO;
             // Bounds, swept ahead by the expected next-step motion.

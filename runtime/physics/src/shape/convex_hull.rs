@@ -11,6 +11,16 @@ use crate::mass_properties::MassProperties;
 /// Bounded: `[1e-6, 1e-2]`; too low keeps noise faces, too high drops real detail.
 pub const HULL_RELATIVE_EPSILON: f32 = 1e-4;
 
+/// A point cloud is flat (a polygon, [`HullDimension::Flat`]) only when its thickness is
+/// below this fraction of its size: a few f32 roundings. Thin but solid shapes (a wall
+/// 10 km wide and 1 cm thick, aspect 10⁶) stay solid; with the face tolerance as the
+/// flatness test they were flattened onto one face and lost their thickness.
+pub const HULL_FLAT_RELATIVE_EPSILON: f32 = 2e-7;
+
+/// For thin solids the face tolerance is at most this fraction of the thickness (so the
+/// two large faces of a slab are never merged into one plane).
+pub const HULL_THIN_EPSILON_FRACTION: f32 = 1e-2;
+
 /// Upper bound on input points processed by [`ConvexHull::from_points`]; extra points are
 /// ignored (the builder is O(n·faces)). Documented cap, not a silent truncation: see
 /// [`HullError::TooManyPoints`].
@@ -142,9 +152,11 @@ impl ConvexHull {
             .cross(points[i2] - points[i0])
             .normalize();
         let i3 = argmax(points, |p| (*p - points[i0]).dot(plane_n).abs());
-        if (points[i3] - points[i0]).dot(plane_n).abs() <= eps {
+        let thickness = (points[i3] - points[i0]).dot(plane_n).abs();
+        if thickness <= (size * HULL_FLAT_RELATIVE_EPSILON).max(f32::MIN_POSITIVE) {
             return Ok(Self::flat(points, points[i0], plane_n, eps));
         }
+        let eps = eps.min(thickness * HULL_THIN_EPSILON_FRACTION);
         Self::solid(points, [i0, i1, i2, i3], eps)
     }
 

@@ -91,6 +91,16 @@ impl Shape {
         }
     }
 
+    /// Smallest dimension of a finite shape, metres (a sphere's diameter, a box's shortest
+    /// side); `f32::MAX` for half spaces and triangle meshes, which have no body to deform.
+    #[must_use]
+    pub fn size(&self) -> f32 {
+        match self {
+            Self::HalfSpace(_) | Self::TriMesh(_) => f32::MAX,
+            _ => 2.0 * self.aabb(&Pose::IDENTITY).half_extents().min_element(),
+        }
+    }
+
     /// Mass properties for density `rho` (kg/m³), in the shape frame. Half spaces and
     /// triangle meshes have none.
     #[must_use]

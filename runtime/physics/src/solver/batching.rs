@@ -187,20 +187,21 @@ impl ContactBatches {
             .for_each(|b| b.solve(states, pass));
     }
 
-    /// Restitution after the substeps, batch by batch.
-    pub(crate) fn apply_restitution(&mut self, states: &mut [BodyState], threshold: f32) {
+    /// One restitution pass after the substeps, batch by batch (see
+    /// [`ContactBatch::apply_restitution`](super::contact_batch::ContactBatch::apply_restitution)).
+    pub(crate) fn apply_restitution(&mut self, states: &mut [BodyState], h: f32) {
         self.four
             .iter_mut()
-            .for_each(|b| b.apply_restitution(states, threshold));
+            .for_each(|b| b.apply_restitution(states, h));
         self.one
             .iter_mut()
-            .for_each(|b| b.apply_restitution(states, threshold));
+            .for_each(|b| b.apply_restitution(states, h));
         self.four_linear
             .iter_mut()
-            .for_each(|b| b.apply_restitution(states, threshold));
+            .for_each(|b| b.apply_restitution(states, h));
         self.one_linear
             .iter_mut()
-            .for_each(|b| b.apply_restitution(states, threshold));
+            .for_each(|b| b.apply_restitution(states, h));
     }
 
     /// Calls `f(manifold index, impulses)` for every manifold, batch by batch.
@@ -249,6 +250,8 @@ mod tests {
                 normal: Vec3A::Y,
                 tangent: [Vec3A::X, Vec3A::Z],
                 restitution: 0.0,
+                bounce_accel: 0.0,
+                mass_scale: [1.0; 2],
                 softness: Softness::RIGID,
                 count: r.count,
                 friction: FrictionPart::default(),

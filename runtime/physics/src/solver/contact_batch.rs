@@ -47,7 +47,8 @@ pub(crate) struct PointLanes {
     pub normal_impulse: F,
     pub max_normal_impulse: F,
     pub normal_mass: F,
-    pub relative_velocity: F,
+    /// Restitution's target separating velocity; NaN where the point does not bounce.
+    pub bounce_velocity: F,
 }
 
 impl PointLanes {
@@ -56,7 +57,7 @@ impl PointLanes {
         normal_impulse: F::ZERO,
         max_normal_impulse: F::ZERO,
         normal_mass: F::ZERO,
-        relative_velocity: F::ZERO,
+        bounce_velocity: F::ZERO,
     };
 }
 
@@ -257,6 +258,8 @@ pub(crate) struct ContactBatch<const N: usize, M: ManifoldRows, L: Levers<N>> {
     slide_mass: F,
     levers: L,
     manifold: M,
+    /// Relative normal acceleration (gravity, forces) of the bodies, m/s², for restitution.
+    bounce_accel: F,
 }
 
 /// Sets lane `l` of `f`.
@@ -304,6 +307,7 @@ impl<const N: usize, M: ManifoldRows, L: Levers<N>> ContactBatch<N, M, L> {
         slide_mass: F::ZERO,
         levers: L::EMPTY,
         manifold: M::EMPTY,
+        bounce_accel: F::ZERO,
     };
 
     /// Writes a prepared manifold into lane `l`, which reports `id` in
@@ -322,8 +326,10 @@ impl<const N: usize, M: ManifoldRows, L: Levers<N>> ContactBatch<N, M, L> {
         self.body_b[l] = c.body_b;
         self.writes_a |= (c.writes & 1) << l;
         self.writes_b |= ((c.writes >> 1) & 1) << l;
-        self.inv_mass_a.set(l, states[c.body_a as usize].inv_mass);
-        self.inv_mass_b.set(l, states[c.body_b as usize].inv_mass);
+        self.inv_mass_a
+            .set(l, states[c.body_a as usize].inv_mass * c.mass_scale[0]);
+        self.inv_mass_b
+            .set(l, states[c.body_b as usize].inv_mass * c.mass_scale[1]);
         self.normal.set(l, c.normal);
         self.tangent[0].set(l, c.tangent[0]);
         self.tangent[1].set(l, c.tangent[1]);
@@ -331,13 +337,14 @@ impl<const N: usize, M: ManifoldRows, L: Levers<N>> ContactBatch<N, M, L> {
         set(&mut self.mass_scale, l, c.softness.mass_scale);
         set(&mut self.impulse_scale, l, c.softness.impulse_scale);
         set(&mut self.restitution, l, c.restitution);
+        set(&mut self.bounce_accel, l, c.bounce_accel);
         let count = usize::from(c.count);
         for (lanes, p) in self.points.iter_mut().zip(&prepared.points).take(count) {
             set(&mut lanes.base_separation, l, p.base_separation);
             set(&mut lanes.normal_impulse, l, p.normal_impulse);
             set(&mut lanes.max_normal_impulse, l, p.max_normal_impulse);
             set(&mut lanes.normal_mass, l, p.normal_mass);
-            set(&mut lanes.relative_velocity, l, p.relative_velocity);
+            set(&mut lanes.bounce_velocity, l, p.bounce_velocity);
         }
         let f = &c.friction;
         set(&mut self.friction, l, f.friction);
@@ -578,35 +585,58 @@ impl<const N: usize, M: ManifoldRows, L: Levers<N>> ContactBatch<N, M, L> {
         }
     }
 
-    /// After substepping: points that approached faster than `threshold` and carried load
-    /// get a separating velocity `e · |approach speed|`.
-    pub(crate) fn apply_restitution(&mut self, states: &mut [BodyState], threshold: f32) {
+    /// One restitution pass after the substeps (see [`super::restitution`]): every point of
+    /// a bouncy manifold that carried load and was given a rebound speed is driven to
+    /// separate at least at that speed, corrected for where the step left the bodies
+    /// ([`super::restitution::stored_rebound`]). Passes repeat Gauss–Seidel towards the
+    /// simultaneous solution (a body hitting two others in one step); the accumulated normal
+    /// impulse stays ≥ 0. `h` is the substep.
+    pub(crate) fn apply_restitution(&mut self, states: &mut [BodyState], h: f32) {
         let bouncy = self.restitution.simd_gt(F::ZERO);
         if !bouncy.any() {
             return;
         }
         let mut a = Self::gather(states, &self.body_a);
         let mut b = Self::gather(states, &self.body_b);
+        let ((dp_a, dtheta_a), (dp_b, dtheta_b)) = if L::ANGULAR {
+            (
+                gather_deltas(states, &self.body_a),
+                gather_deltas(states, &self.body_b),
+            )
+        } else {
+            (
+                (gather(states, &self.body_a, |s| s.dp), V3::ZERO),
+                (gather(states, &self.body_b, |s| s.dp), V3::ZERO),
+            )
+        };
         let n = self.normal;
-        let neg_threshold = F::splat(-threshold);
+        let dpn = (dp_b - dp_a).dot(n);
+        let accel = self.bounce_accel;
+        let half_h = F::splat(0.5 * h);
         for (k, cp) in self.points.iter_mut().enumerate() {
-            let fast = cp.relative_velocity.simd_le(neg_threshold);
             let loaded = cp.max_normal_impulse.simd_gt(F::ZERO);
-            let bounce = bouncy & fast & loaded;
+            // NaN (no bounce) is the one value unequal to itself.
+            let given = cp.bounce_velocity.simd_eq(cp.bounce_velocity);
+            let bounce = bouncy & loaded & given;
             if !bounce.any() {
                 continue;
             }
             let lever = self.levers.rows().map(|rows| &rows.points[k]);
-            let vn = match lever {
-                Some(lever) => (b.v - a.v).dot(n) + b.w.dot(lever.rn_b) - a.w.dot(lever.rn_a),
-                None => (b.v - a.v).dot(n),
+            let (vn, sep) = match lever {
+                Some(lever) => (
+                    (b.v - a.v).dot(n) + b.w.dot(lever.rn_b) - a.w.dot(lever.rn_a),
+                    cp.base_separation + dpn + dtheta_b.dot(lever.rn_b) - dtheta_a.dot(lever.rn_a),
+                ),
+                None => ((b.v - a.v).dot(n), cp.base_separation + dpn),
             };
-            let imp = -cp.normal_mass * (vn + self.restitution * cp.relative_velocity);
+            let speed = given.select(cp.bounce_velocity, F::ZERO);
+            let target =
+                fmax(F::ZERO, speed * speed + F::splat(2.0) * accel * sep).sqrt() - accel * half_h;
+            let imp = -cp.normal_mass * (vn - target);
             let new = fmax(F::ZERO, cp.normal_impulse + imp);
             let imp = bounce.select(new - cp.normal_impulse, F::ZERO);
             cp.normal_impulse += imp;
-            cp.max_normal_impulse =
-                bounce.select(fmax(cp.max_normal_impulse, imp), cp.max_normal_impulse);
+            cp.max_normal_impulse = fmax(cp.max_normal_impulse, imp);
             let p = n.scale(imp);
             a.v -= self.inv_mass_a * p;
             b.v += self.inv_mass_b * p;

@@ -29,8 +29,11 @@ pub(crate) struct ConstraintPoint {
     /// Its inverse `J M⁻¹ Jᵀ` (the soft row's compliance is this times
     /// `impulse_scale / mass_scale`).
     pub inv_normal_mass: f32,
-    /// Normal relative velocity at step start (for restitution), m/s.
+    /// Normal relative velocity at step start (pre-solve), m/s.
     pub relative_velocity: f32,
+    /// Rebound speed restitution gives this point after the substeps, m/s (see
+    /// [`super::restitution::bounce_velocity`]); NaN where it does not bounce.
+    pub bounce_velocity: f32,
     /// Distance from the manifold centre in the contact plane (twist friction lever), m.
     pub twist_lever: f32,
     /// Angular Jacobians `r × n` for A and B (fixed for the step).
@@ -132,6 +135,11 @@ pub(crate) struct ContactConstraint {
     pub normal: Vec3A,
     pub tangent: [Vec3A; 2],
     pub restitution: f32,
+    /// Relative normal acceleration of the bodies (gravity, forces), m/s², for restitution.
+    pub bounce_accel: f32,
+    /// Factors on each body's inverse mass and inertia in this manifold's rows (1 but for
+    /// the light body of a resting contact past `PhysicsSettings::max_support_mass_ratio`).
+    pub mass_scale: [f32; 2],
     pub softness: Softness,
     pub count: u8,
     /// Friction at the manifold centre.
@@ -189,13 +197,14 @@ pub(crate) fn prepare(
     static_speed: f32,
 ) {
     let (sa, sb) = (&states[c.body_a as usize], &states[c.body_b as usize]);
+    let [ka, kb] = c.mass_scale;
     let a = &MassView {
-        inv_mass: sa.inv_mass,
-        inv_i: Mat3A::from(bodies[c.body_a as usize].inv_i),
+        inv_mass: sa.inv_mass * ka,
+        inv_i: Mat3A::from(bodies[c.body_a as usize].inv_i) * ka,
     };
     let b = &MassView {
-        inv_mass: sb.inv_mass,
-        inv_i: Mat3A::from(bodies[c.body_b as usize].inv_i),
+        inv_mass: sb.inv_mass * kb,
+        inv_i: Mat3A::from(bodies[c.body_b as usize].inv_i) * kb,
     };
     let n = c.normal;
     let inv_count = 1.0 / anchors.len().max(1) as f32;
@@ -225,6 +234,7 @@ pub(crate) fn prepare(
         cp.inv_normal_mass = k;
         cp.normal_mass = if k > 0.0 { 1.0 / k } else { 0.0 };
         cp.relative_velocity = dv.dot(n);
+        cp.bounce_velocity = f32::NAN;
         let off = ra - ca;
         cp.twist_lever = (off - n * off.dot(n)).length();
         cp.max_normal_impulse = 0.0;

@@ -21,6 +21,24 @@ pub const BALL_LOAD_STIFFENING_MAX_SUBSTEP_FRACTION: f32 = 0.25;
 /// … and up to this fraction of the step rate: twice [`LOAD_STIFFENING_MAX_STEP_FRACTION`].
 pub const BALL_LOAD_STIFFENING_MAX_STEP_FRACTION: f32 = 1.0;
 
+/// Size stiffening never goes above this fraction of the substep rate, 1/s per Hz (`h·ω`
+/// up to 2π). Bounded `(0, ∞)`: the soft step stays stable for any stiffness, but past about
+/// one substep per period a contact is as good as rigid and a stiffer one only adds
+/// rounding; below it heavy loads on small bodies sink further.
+pub const SIZE_STIFFENING_MAX_SUBSTEP_FRACTION: f32 = 1.0;
+
+/// Half-life of a contact's load memory, seconds: a contact stiffens for the largest load
+/// it carried recently, not last step's (stiffening from last step's load alone fed back:
+/// a 100:1 box pressed in, stiffened, shot out, unloaded, went soft and fell back in,
+/// deeper each time). Bounded `[dt, ∞)`: shorter brings the feedback back, longer keeps
+/// contacts stiff after their load is gone.
+pub const LOAD_MEMORY_HALF_LIFE: f32 = 0.5;
+
+/// … nor above this fraction of the step rate, 1/s per Hz: contact geometry is refreshed
+/// once per step, and a column of ten boxes at 30 Hz × 2 stiffened to 60 Hz gained energy
+/// from it and burst.
+pub const SIZE_STIFFENING_MAX_STEP_FRACTION: f32 = 1.5;
+
 /// Coefficients of a soft constraint with stiffness `hertz` and damping ratio `zeta`
 /// at substep `h` (Box2D v3 / "soft step" formulation):
 /// `ω = 2π·hertz`, `a1 = 2ζ + hω`, `a2 = hω·a1`, `a3 = 1/(1 + a2)`,
@@ -60,6 +78,21 @@ impl Softness {
         }
     }
 
+    /// A contact at `hertz` that carries `mass_ratio` times its own effective mass (a heavy
+    /// body on a light one): the damping ratio grows with the square root of the ratio,
+    /// `ζ · √mass_ratio`.
+    ///
+    /// A soft row's stiffness and damping are relative to the contact's effective mass, the
+    /// light body's; the mass it holds up is `mass_ratio` times that, and left at ratio `ζ`
+    /// the row damps it only `ζ / √mass_ratio` (a 1000:1 box rang on its support, ten times
+    /// the static deflection deep, and bounced off). Scaled, the supported mass is damped
+    /// like an unloaded contact damps its own; the static deflection, `a / ω²`, does not
+    /// depend on the damping, and overlap is pushed out no faster than by a light contact.
+    #[must_use]
+    pub fn for_supported_mass(hertz: f32, zeta: f32, h: f32, mass_ratio: f32) -> Self {
+        Self::new(hertz, zeta * mass_ratio.max(1.0).sqrt(), h)
+    }
+
     /// Stiffest contact, Hz, that [`Softness::for_load`] may reach at substep `h` and step
     /// `dt`: `min(h⁻¹ · 0.125, dt⁻¹ · 0.5)` (see the two constants).
     #[must_use]
@@ -84,7 +117,31 @@ impl Softness {
     /// below `base_hertz`).
     #[must_use]
     pub fn for_load(base_hertz: f32, load_ratio: f32, max_hertz: f32, zeta: f32, h: f32) -> Self {
-        let hz = (base_hertz * load_ratio.max(1.0).sqrt()).min(max_hertz.max(base_hertz));
-        Self::new(hz, zeta, h)
+        Self::new(Self::load_hertz(base_hertz, load_ratio, max_hertz), zeta, h)
+    }
+
+    /// The stiffness of [`Softness::for_load`], Hz.
+    #[must_use]
+    pub fn load_hertz(base_hertz: f32, load_ratio: f32, max_hertz: f32) -> f32 {
+        (base_hertz * load_ratio.max(1.0).sqrt()).min(max_hertz.max(base_hertz))
+    }
+
+    /// Stiffness, Hz, at which a contact carrying load acceleration `load_accel` (m/s²: its
+    /// normal impulse over its effective mass and the substep) deflects `budget` metres:
+    /// the static deflection of the soft contact is `a / ω²`, so `ω = √(a / budget)`.
+    #[must_use]
+    pub fn size_hertz(load_accel: f32, budget: f32) -> f32 {
+        if load_accel > 0.0 && budget > 0.0 {
+            (load_accel / budget).sqrt() / (2.0 * std::f32::consts::PI)
+        } else {
+            0.0
+        }
+    }
+
+    /// Stiffest contact, Hz, that size stiffening may reach at substep `h` and step `dt`:
+    /// `min(h⁻¹ · 1, dt⁻¹ · 1.5)` (see the two constants).
+    #[must_use]
+    pub fn max_size_hertz(h: f32, dt: f32) -> f32 {
+        (SIZE_STIFFENING_MAX_SUBSTEP_FRACTION / h).min(SIZE_STIFFENING_MAX_STEP_FRACTION / dt)
     }
 }

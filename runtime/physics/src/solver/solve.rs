@@ -6,8 +6,17 @@ use glam::{Quat, Vec3, Vec3A};
 use super::batching::ContactBatches;
 use super::body_state::BodyState;
 use super::contact_batch::Pass;
-use super::solver_body::SolverBody;
+use super::free_rotation::free_rotation_step;
+use super::solver_body::{SolverBody, CAPPED_ANGULAR, CAPPED_LINEAR};
 use crate::pose::unit_rotation;
+
+/// Restitution passes after the substeps: the first gives the impacts the substeps absorbed
+/// their rebound, the others resolve the collisions those rebounds cause in the same step
+/// (see `ContactBatch::apply_restitution`). Bounded `[1, 16]`: each pass is one more
+/// collision down a chain of touching bodies (Newton's cradle needs one per ball); fewer
+/// passes leave such chains inelastic (50 elastic balls in a box lost 4 % of their energy
+/// per 10,000 steps at 4 passes), more cost a pass over the bouncing contacts each.
+pub const RESTITUTION_PASSES: u32 = 4;
 
 /// Parameters of one solver run (derived from `PhysicsSettings`).
 #[derive(Clone, Copy, Debug)]
@@ -17,18 +26,21 @@ pub(crate) struct SolveParams {
     pub iterations: u32,
     pub relax_iterations: u32,
     pub max_push: f32,
-    pub restitution_threshold: f32,
+    /// Some manifold of the step has restitution (else the restitution passes are skipped).
+    pub restitution: bool,
     pub max_linear_speed: f32,
     pub max_angular_speed: f32,
 }
 
-/// Runs all substeps over awake bodies and their contact batches.
+/// Runs all substeps over awake bodies and their contact batches. Returns how many
+/// free-rotation solves missed their tolerance (see [`free_rotation_step`]).
 pub(crate) fn solve_substeps(
     bodies: &mut [SolverBody],
     states: &mut [BodyState],
     batches: &mut ContactBatches,
     p: &SolveParams,
-) {
+) -> u32 {
+    let mut not_converged = 0;
     let substeps = p.substeps.max(1);
     let h = p.dt / substeps as f32;
     let solve_pass = Pass {
@@ -41,51 +53,88 @@ pub(crate) fn solve_substeps(
         ..solve_pass
     };
     for _ in 0..substeps {
-        integrate_velocities(bodies, states, h, p);
+        integrate_velocities(bodies, states, h);
         batches.warm_start(states);
         for _ in 0..p.iterations.max(1) {
             batches.solve(states, solve_pass);
         }
-        integrate_positions(bodies, states, h);
+        not_converged += integrate_positions(bodies, states, h, p);
         for _ in 0..p.relax_iterations {
             batches.solve(states, relax_pass);
         }
     }
-    batches.apply_restitution(states, p.restitution_threshold);
+    if p.restitution {
+        for _ in 0..RESTITUTION_PASSES {
+            batches.apply_restitution(states, h);
+        }
+    }
+    not_converged
 }
 
-fn integrate_velocities(bodies: &[SolverBody], states: &mut [BodyState], h: f32, p: &SolveParams) {
-    let max_v2 = p.max_linear_speed * p.max_linear_speed;
-    let max_w2 = p.max_angular_speed * p.max_angular_speed;
+fn integrate_velocities(bodies: &[SolverBody], states: &mut [BodyState], h: f32) {
     for (b, st) in bodies.iter().zip(states.iter_mut()).skip(1) {
-        let mut v = st.v + b.lin_acc * h;
-        let mut w = st.w + b.ang_acc * h;
-        v *= b.lin_damp_factor;
-        w *= b.ang_damp_factor;
-        // Squared lengths against squared limits: no square root for the common case.
-        let vl2 = v.length_squared();
-        if vl2 > max_v2 {
-            v *= p.max_linear_speed / vl2.sqrt();
-        }
-        let wl2 = w.length_squared();
-        if wl2 > max_w2 {
-            w *= p.max_angular_speed / wl2.sqrt();
-        }
+        let v = (st.v + b.lin_acc * h) * b.lin_damp_factor;
+        let w = (st.w + b.ang_acc * h) * b.ang_damp_factor;
         st.v = v * b.lin_mask;
         st.w = w * b.ang_mask;
     }
 }
 
-fn integrate_positions(bodies: &mut [SolverBody], states: &mut [BodyState], h: f32) {
+/// Clamps a body's solved velocities to the speed caps before they move it, and marks in
+/// `b.capped` which cap it hit ([`CAPPED_LINEAR`], [`CAPPED_ANGULAR`]).
+#[inline]
+fn clamp_to_caps(b: &mut SolverBody, st: &mut BodyState, max_v: f32, max_w: f32) {
+    // Squared lengths against squared limits: no square root for the common case.
+    let vl2 = st.v.length_squared();
+    if vl2 > max_v * max_v {
+        st.v *= max_v / vl2.sqrt();
+        b.capped |= CAPPED_LINEAR;
+    }
+    let wl2 = st.w.length_squared();
+    if wl2 > max_w * max_w {
+        st.w *= max_w / wl2.sqrt();
+        b.capped |= CAPPED_ANGULAR;
+    }
+}
+
+/// Moves every body by its substep velocity, clamped to the speed caps first (the solve may
+/// have raised it past them). Bodies with an anisotropic inertia and no rotation lock turn by
+/// the implicit midpoint rule ([`free_rotation_step`]), which keeps the energy and the
+/// angular momentum of free rotation; the others by the first-order quaternion update.
+/// Returns how many midpoint solves missed their tolerance.
+fn integrate_positions(
+    bodies: &mut [SolverBody],
+    states: &mut [BodyState],
+    h: f32,
+    p: &SolveParams,
+) -> u32 {
+    let mut not_converged = 0;
     for (b, st) in bodies.iter_mut().zip(states.iter_mut()).skip(1) {
+        clamp_to_caps(b, st, p.max_linear_speed, p.max_angular_speed);
         st.dp += st.v * h;
-        st.dtheta += st.w * h;
         let w = st.w;
         if w == Vec3A::ZERO {
             continue;
         }
-        let q_old = b.dq * b.q0;
         let dq = b.dq;
+        if b.gyro {
+            let q_old = dq * b.q0;
+            let omega = if w == b.omega_world {
+                b.omega_body
+            } else {
+                rotate(q_old.inverse(), Vec3::from(w))
+            };
+            let step = free_rotation_step(b.inertia_local, omega, h);
+            not_converged += u32::from(!step.converged);
+            let q_new = q_old * step.rotation;
+            b.dq = unit_rotation(q_new * b.q0.inverse());
+            st.dtheta += Vec3A::from(q_old * step.rotation_vector);
+            st.w = Vec3A::from(rotate(q_new, step.omega)) * b.ang_mask;
+            b.omega_body = step.omega;
+            b.omega_world = st.w;
+            continue;
+        }
+        st.dtheta += w * h;
         let spin = Quat::from_xyzw(w.x, w.y, w.z, 0.0) * dq;
         b.dq = unit_rotation(Quat::from_xyzw(
             dq.x + 0.5 * h * spin.x,
@@ -93,11 +142,20 @@ fn integrate_positions(bodies: &mut [SolverBody], states: &mut [BodyState], h: f
             dq.z + 0.5 * h * spin.z,
             dq.w + 0.5 * h * spin.w,
         ));
-        if b.gyro {
-            // Free rotation keeps world angular momentum L = R I Rᵀ ω.
-            let q_new = b.dq * b.q0;
-            let l = q_old * (b.inertia_local * (q_old.inverse() * Vec3::from(w)));
-            st.w = Vec3A::from(q_new * (b.inv_inertia_local * (q_new.inverse() * l))) * b.ang_mask;
-        }
+    }
+    not_converged
+}
+
+/// `q * v` with the length of `v` kept exactly: a unit quaternion in f32 has a norm off by
+/// rounding, and the two frame changes per substep of a tumbling body would otherwise scale
+/// its spin by that error every substep (energy drifted by 0.6 % per minute at 240 Hz).
+#[inline]
+fn rotate(q: Quat, v: Vec3) -> Vec3 {
+    let r = q * v;
+    let (l2, r2) = (v.length_squared(), r.length_squared());
+    if r2 > 0.0 {
+        r * (l2 / r2).sqrt()
+    } else {
+        r
     }
 }

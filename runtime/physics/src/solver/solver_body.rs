@@ -1,7 +1,12 @@
 //! [`SolverBody`]: per-step constants of an awake body inside the solver (its changing
 //! state lives in [`super::body_state::BodyState`]).
 
-use glam::{Mat3, Quat, Vec3A};
+use glam::{Mat3, Quat, Vec3, Vec3A};
+
+/// [`SolverBody::capped`] bit: the linear speed was clamped to `max_linear_speed`.
+pub(crate) const CAPPED_LINEAR: u8 = 1;
+/// [`SolverBody::capped`] bit: the spin was clamped to `max_angular_speed`.
+pub(crate) const CAPPED_ANGULAR: u8 = 2;
 
 /// Constants of one awake dynamic or kinematic body during a step, and its rotation.
 /// Index 0 of the solver array is a dummy for static/sleeping bodies (all zero).
@@ -25,11 +30,18 @@ pub(crate) struct SolverBody {
     pub ang_mask: Vec3A,
     /// Orientation at step start.
     pub q0: Quat,
-    /// Local inertia and its inverse (for angular-momentum-preserving free rotation).
+    /// Body-frame inertia (for the free-rotation update).
     pub inertia_local: Mat3,
-    /// Inverse of `inertia_local`.
-    pub inv_inertia_local: Mat3,
-    /// Apply the gyroscopic (momentum-preserving) update.
+    /// Body-frame angular velocity matching the world one `omega_world` (for a gyroscopic
+    /// body: while no contact or torque changes the spin, substeps reuse it instead of
+    /// converting frames, whose rounding drifted the energy of free rotation).
+    pub omega_body: Vec3,
+    /// The world angular velocity `omega_body` belongs to (NaN when none does).
+    pub omega_world: Vec3A,
+    /// Which speed caps the step clamped ([`CAPPED_LINEAR`], [`CAPPED_ANGULAR`]).
+    pub capped: u8,
+    /// Turn by the energy- and momentum-preserving free-rotation update
+    /// ([`super::free_rotation`]): anisotropic inertia, no rotation axis locked.
     pub gyro: bool,
 }
 
@@ -46,7 +58,9 @@ impl SolverBody {
         ang_mask: Vec3A::ZERO,
         q0: Quat::IDENTITY,
         inertia_local: Mat3::ZERO,
-        inv_inertia_local: Mat3::ZERO,
+        omega_body: Vec3::ZERO,
+        omega_world: Vec3A::NAN,
+        capped: 0,
         gyro: false,
     };
 }

@@ -1,0 +1,183 @@
+//! Resting contacts under heavy loads and on small bodies: a heavy box on a light one, and
+//! penetration relative to size (1 mm … 1 km), against the ideal of no sinking.
+//!
+//! A 1000 kg box on a 1 kg box fell through it at fast and balanced and sank 13 cm at
+//! precise; a 1 mm ball on a box sank 24 % of its size at balanced: contacts settled at a
+//! fixed depth per load, not relative to the bodies' size, and Gauss–Seidel needed about
+//! `√ratio` substeps to catch a heavy body.
+mod common;
+use common::*;
+use onyx_physics::glam::Vec3;
+use onyx_physics::RigidBodyDesc;
+use onyx_physics::{BodyHandle, ColliderDesc, PhysicsPreset, PhysicsSettings, PhysicsWorld};
+
+fn settings(p: PhysicsPreset) -> PhysicsSettings {
+    PhysicsSettings {
+        sleep_enabled: false,
+        ..p.settings()
+    }
+}
+
+/// A cube of half size `heavy_half`, `ratio` times heavier than the cube of half size
+/// `light_half` it rests on, on a static ground box. Returns how far the heavy cube sank
+/// from where it was placed (worst over the run, and at the end), metres.
+fn heavy_on_light(p: PhysicsPreset, ratio: f32, light_half: f32, heavy_half: f32) -> (f32, f32) {
+    let s = settings(p);
+    let mut w = PhysicsWorld::new(s);
+    let ground = w.insert_body(RigidBodyDesc::fixed());
+    w.insert_collider(
+        ColliderDesc::cuboid(20.0, 0.5, 20.0).translation(Vec3::Y * -0.5),
+        ground,
+    );
+    let light = w.insert_body(RigidBodyDesc::dynamic().translation(Vec3::Y * light_half));
+    w.insert_collider(
+        ColliderDesc::cuboid(light_half, light_half, light_half).density(1000.0),
+        light,
+    );
+    let m_light = w.body(light).unwrap().mass();
+    let y0 = 2.0 * light_half + heavy_half;
+    let heavy = w.insert_body(RigidBodyDesc::dynamic().translation(Vec3::Y * y0));
+    let volume = (2.0 * heavy_half).powi(3);
+    w.insert_collider(
+        ColliderDesc::cuboid(heavy_half, heavy_half, heavy_half).density(ratio * m_light / volume),
+        heavy,
+    );
+    let mut worst = 0.0f32;
+    for _ in 0..(5.0 / s.dt) as usize {
+        w.step();
+        worst = worst.max(y0 - w.body(heavy).unwrap().translation().y);
+    }
+    (worst, y0 - w.body(heavy).unwrap().translation().y)
+}
+
+#[test]
+fn a_heavy_box_on_a_light_box_barely_sinks() {
+    // The issue's targets: < 1 cm at precise, < 2 cm at balanced, for ratios up to 1000:1.
+    for (preset, limit) in [
+        (PhysicsPreset::Balanced, 0.02),
+        (PhysicsPreset::Precise, 0.01),
+    ] {
+        for (light_half, heavy_half) in [(0.5f32, 0.5f32), (0.05, 0.5), (0.5, 0.05)] {
+            for ratio in [1.0f32, 10.0, 100.0, 400.0, 1000.0] {
+                let (worst, end) = heavy_on_light(preset, ratio, light_half, heavy_half);
+                println!(
+                    "{preset} {ratio}:1, cubes {} m on {} m: sank {end:.4} m (worst {worst:.4}), \
+                     expected < {limit}",
+                    2.0 * heavy_half,
+                    2.0 * light_half
+                );
+                assert!(
+                    worst < limit && end.abs() < limit,
+                    "{preset}: a {ratio}:1 box sank {worst} m (end {end}), expected < {limit}"
+                );
+            }
+        }
+    }
+}
+
+/// A ball of radius `r` resting on a dynamic box resting on the ground. Returns the ball's
+/// penetration into the box as a fraction of its diameter.
+fn ball_on_box_penetration(p: PhysicsPreset, r: f32) -> f32 {
+    let s = settings(p);
+    let mut w = PhysicsWorld::new(s);
+    let ground = w.insert_body(RigidBodyDesc::fixed());
+    w.insert_collider(ColliderDesc::half_space(Vec3::Y), ground);
+    let half = 2.0 * r;
+    let bx = w.insert_body(RigidBodyDesc::dynamic().translation(Vec3::Y * half));
+    w.insert_collider(ColliderDesc::cuboid(4.0 * r, half, 4.0 * r), bx);
+    let ball: BodyHandle =
+        w.insert_body(RigidBodyDesc::dynamic().translation(Vec3::Y * (2.0 * half + r)));
+    w.insert_collider(ColliderDesc::sphere(r), ball);
+    run(&mut w, (3.0 / s.dt) as usize);
+    let top = w.body(bx).unwrap().translation().y + half;
+    (top + r - w.body(ball).unwrap().translation().y) / (2.0 * r)
+}
+
+#[test]
+fn resting_penetration_is_a_few_percent_of_size_from_1_mm_to_1_km() {
+    for preset in [PhysicsPreset::Balanced, PhysicsPreset::Precise] {
+        for diameter in [0.001f32, 0.01, 0.1, 1.0, 10.0, 100.0, 1000.0] {
+            let pen = ball_on_box_penetration(preset, 0.5 * diameter);
+            println!(
+                "{preset} ball {diameter} m: penetration {pen:.4} of its size (expected ≤ 0.05)"
+            );
+            assert!(
+                (0.0..=0.05).contains(&pen),
+                "{preset}: a {diameter} m ball rests {pen} of its size deep, expected 0 … 5 %"
+            );
+        }
+    }
+}
+
+#[test]
+fn a_contact_the_step_cannot_hold_is_reported_once_with_the_preset_that_would() {
+    // A 1 mm ball on a box at `fast`: the stiffest contact a 30 Hz step allows deflects it
+    // about g / ω², several times its 2 % budget.
+    let r = 0.0005;
+    let s = settings(PhysicsPreset::Fast);
+    let mut w = PhysicsWorld::new(s);
+    let ground = w.insert_body(RigidBodyDesc::fixed());
+    w.insert_collider(ColliderDesc::half_space(Vec3::Y), ground);
+    let bx = w.insert_body(RigidBodyDesc::dynamic().translation(Vec3::Y * 2.0 * r));
+    w.insert_collider(ColliderDesc::cuboid(4.0 * r, 2.0 * r, 4.0 * r), bx);
+    let ball = w.insert_body(RigidBodyDesc::dynamic().translation(Vec3::Y * 5.0 * r));
+    w.insert_collider(ColliderDesc::sphere(r), ball);
+    let mut reports = Vec::new();
+    for _ in 0..(3.0 / s.dt) as usize {
+        reports.extend(w.step().overloaded_contacts.iter().copied());
+    }
+    let top = w.body(bx).unwrap().translation().y + 2.0 * r;
+    let measured = top + r - w.body(ball).unwrap().translation().y;
+    println!("reports: {reports:?}; measured depth {measured} m");
+    let mine: Vec<_> = reports
+        .iter()
+        .filter(|o| [o.body_a, o.body_b] == [bx, ball] || [o.body_a, o.body_b] == [ball, bx])
+        .collect();
+    assert_eq!(
+        mine.len(),
+        1,
+        "expected the ball's contact reported once: {reports:?}"
+    );
+    let o = mine[0];
+    assert_eq!(o.holding_preset, Some(PhysicsPreset::Precise));
+    assert!(
+        (o.expected_depth - measured).abs() < 0.3 * measured,
+        "reported depth {} m, measured {measured} m (expected within 30 %)",
+        o.expected_depth
+    );
+    assert!((o.allowed_depth - 0.02 * 2.0 * r).abs() < 1e-9);
+    assert!(o.load_ratio >= 1.0, "load ratio {}", o.load_ratio);
+    let m = w.body(bx).unwrap().mass() / w.body(ball).unwrap().mass();
+    assert!(o.mass_ratio.is_some_and(|x| (x - m).abs() < 1e-3 * m));
+}
+
+#[test]
+fn bodies_moving_past_the_precise_range_are_named_once() {
+    let s = PhysicsSettings {
+        gravity: Vec3::ZERO,
+        ..settings(PhysicsPreset::Balanced)
+    };
+    let range = s.precise_range();
+    assert_eq!(range, 16_384.0, "1 mm spacing holds to 2^14 m");
+    let mut w = PhysicsWorld::new(s);
+    let near = w.insert_body(
+        RigidBodyDesc::dynamic()
+            .translation(Vec3::X * 0.9 * range)
+            .linvel(Vec3::Y),
+    );
+    w.insert_collider(ColliderDesc::sphere(0.5), near);
+    let far = w.insert_body(
+        RigidBodyDesc::dynamic()
+            .translation(Vec3::Z * -1.1 * range)
+            .linvel(Vec3::Y),
+    );
+    w.insert_collider(ColliderDesc::sphere(0.5), far);
+    let first = w.step().far_bodies.clone();
+    println!("far bodies: {first:?}");
+    assert_eq!(first.len(), 1);
+    assert_eq!(first[0].body, far);
+    assert_eq!(first[0].range, range);
+    for _ in 0..10 {
+        assert!(w.step().far_bodies.is_empty(), "reported twice");
+    }
+}

@@ -1,0 +1,274 @@
+//! Restitution: rebound heights `e²·h`, elastic bounces that keep their energy, the threshold.
+//!
+//! `e = 1` used not to be elastic: each bounce lost about `g·dt` of speed (the restitution
+//! used the velocity at step start, before the fall inside the impact step), so a ball
+//! dropped from 2 m stopped bouncing within 24 s; impacts slower than a fixed 1 m/s were
+//! fully inelastic.
+mod common;
+use common::*;
+use onyx_physics::glam::Vec3;
+use onyx_physics::{
+    BodyHandle, ColliderDesc, PhysicsPreset, PhysicsSettings, PhysicsWorld, RigidBodyDesc,
+};
+
+fn settings(preset: PhysicsPreset, threshold: f32) -> PhysicsSettings {
+    PhysicsSettings {
+        restitution_threshold: threshold,
+        sleep_enabled: false,
+        ..preset.settings()
+    }
+}
+
+/// A ball of radius `r` with its bottom `h` above a ground half space, both with
+/// restitution `e`, no friction.
+fn drop_ball(s: PhysicsSettings, e: f32, h: f32, r: f32) -> (PhysicsWorld, BodyHandle) {
+    let mut w = PhysicsWorld::new(s);
+    let g = w.insert_body(RigidBodyDesc::fixed());
+    w.insert_collider(
+        ColliderDesc::half_space(Vec3::Y)
+            .restitution(e)
+            .friction(0.0),
+        g,
+    );
+    let b = w.insert_body(RigidBodyDesc::dynamic().translation(Vec3::new(0.0, h + r, 0.0)));
+    w.insert_collider(ColliderDesc::sphere(r).restitution(e).friction(0.0), b);
+    (w, b)
+}
+
+/// Apex heights (bottom above the ground) of the first `n` rebounds.
+fn rebound_apexes(w: &mut PhysicsWorld, b: BodyHandle, r: f32, n: usize) -> Vec<f32> {
+    let mut apexes = Vec::new();
+    let mut prev_vy = 0.0f32;
+    let mut apex = f32::MIN;
+    let mut rising = false;
+    let max_steps = (n as f32 * 3.0 / w.settings().dt) as usize;
+    for _ in 0..max_steps {
+        w.step();
+        let body = w.body(b).expect("ball exists");
+        let (vy, y) = (body.linvel().y, body.translation().y - r);
+        if prev_vy <= 0.0 && vy > 0.0 {
+            rising = true;
+            apex = y;
+        }
+        if rising {
+            apex = apex.max(y);
+            if vy <= 0.0 {
+                apexes.push(apex);
+                rising = false;
+                if apexes.len() == n {
+                    break;
+                }
+            }
+        }
+        prev_vy = vy;
+    }
+    apexes
+}
+
+#[test]
+fn elastic_ball_rebounds_to_its_drop_height_after_100_bounces() {
+    let h = 2.0;
+    for preset in PhysicsPreset::ALL {
+        let (mut w, b) = drop_ball(settings(preset, 0.0), 1.0, h, 0.1);
+        let apexes = rebound_apexes(&mut w, b, 0.1, 100);
+        let last = apexes.last().copied().unwrap_or(0.0);
+        let lowest = apexes.iter().copied().fold(f32::MAX, f32::min);
+        println!(
+            "{preset}: {} rebounds, 100th apex {last:.4} m, lowest {lowest:.4} m, expected {h} m",
+            apexes.len()
+        );
+        assert_eq!(apexes.len(), 100, "{preset}: the ball stopped bouncing");
+        // The issue's target is 1 % at balanced; fast and precise are held to the same.
+        assert!(
+            (last - h).abs() < 0.01 * h,
+            "{preset}: 100th rebound apex {last} m, expected {h} m ± 1 %"
+        );
+    }
+}
+
+#[test]
+fn rebound_height_ratio_is_e_squared_at_every_preset() {
+    let h = 2.0;
+    for preset in PhysicsPreset::ALL {
+        for e in [0.3f32, 0.5, 0.7, 0.9] {
+            let (mut w, b) = drop_ball(settings(preset, 0.0), e, h, 0.25);
+            let apex = rebound_apexes(&mut w, b, 0.25, 1)[0];
+            let (measured, expected) = (apex / h, e * e);
+            println!("{preset} e = {e}: h1/h0 measured {measured:.4}, expected {expected:.4}");
+            assert!(
+                (measured - expected).abs() < 0.01,
+                "{preset}, e = {e}: rebound ratio {measured}, expected e² = {expected} ± 0.01"
+            );
+        }
+    }
+}
+
+/// Two equal balls, no gravity, meeting head-on at `speed` each; returns their velocities
+/// along x after the impact.
+fn head_on(speed: f32, threshold: f32, e: f32) -> (f32, f32) {
+    let s = PhysicsSettings {
+        gravity: Vec3::ZERO,
+        ..settings(PhysicsPreset::Balanced, threshold)
+    };
+    let mut w = PhysicsWorld::new(s);
+    let mut ball = |x: f32, v: f32| {
+        let b = w.insert_body(
+            RigidBodyDesc::dynamic()
+                .translation(Vec3::X * x)
+                .linvel(Vec3::X * v),
+        );
+        w.insert_collider(ColliderDesc::sphere(0.1).restitution(e).friction(0.0), b);
+        b
+    };
+    let (a, b) = (ball(-0.5, speed), ball(0.5, -speed));
+    let steps = (2.0 / speed / s.dt) as usize;
+    run(&mut w, steps);
+    (w.body(a).unwrap().linvel().x, w.body(b).unwrap().linvel().x)
+}
+
+#[test]
+fn elastic_balls_meeting_slowly_swap_velocities() {
+    // Equal masses, e = 1: momentum and energy conservation give an exchange of velocities.
+    for speed in [0.05f32, 0.5, 5.0] {
+        let (va, vb) = head_on(speed, 0.0, 1.0);
+        println!("meeting at ±{speed} m/s: after {va:.4}, {vb:.4}, expected ∓{speed}");
+        assert!(
+            (va + speed).abs() < 0.01 * speed && (vb - speed).abs() < 0.01 * speed,
+            "meeting at ±{speed} m/s with e = 1: velocities after {va}, {vb}, expected \
+             {}, {speed} ± 1 %",
+            -speed
+        );
+    }
+}
+
+#[test]
+fn impacts_slower_than_the_threshold_do_not_bounce() {
+    let threshold = PhysicsSettings::default().restitution_threshold;
+    // Closing at twice the speed each: relative approach speed 2·v.
+    let (va, vb) = head_on(0.2 * threshold, threshold, 1.0);
+    println!(
+        "closing at {} m/s, threshold {threshold}: after {va}, {vb}",
+        0.4 * threshold
+    );
+    assert!(
+        va.abs() < 1e-3 && vb.abs() < 1e-3,
+        "impact below the threshold bounced: {va}, {vb}, expected 0, 0"
+    );
+    let (va, vb) = head_on(threshold, threshold, 1.0);
+    println!(
+        "closing at {} m/s, threshold {threshold}: after {va}, {vb}",
+        2.0 * threshold
+    );
+    assert!(
+        va < 0.0 && vb > 0.0,
+        "impact above the threshold did not bounce: {va}, {vb}"
+    );
+}
+
+#[test]
+fn elastic_spheres_in_a_closed_box_keep_their_energy() {
+    for preset in [PhysicsPreset::Balanced, PhysicsPreset::Precise] {
+        let worst = elastic_box(preset, 0.0);
+        assert!(
+            worst < 0.05,
+            "{preset}: energy of 50 elastic balls changed by up to {worst} of the start, \
+             expected < 5 %"
+        );
+    }
+}
+
+/// Known to fail (see the report): at `fast` (10 cm of motion per step for 15 cm balls) and
+/// under gravity, where balls on the floor hit two others in one step, the simultaneous
+/// restitution gains or loses 5-80 % per 10,000 steps.
+#[test]
+#[ignore = "known failure: simultaneous elastic impacts at fast or under gravity"]
+fn elastic_spheres_in_a_closed_box_keep_their_energy_under_gravity_and_at_fast() {
+    let mut failures = Vec::new();
+    for preset in PhysicsPreset::ALL {
+        for gravity in [0.0, G] {
+            let worst = elastic_box(preset, gravity);
+            if worst >= 0.05 {
+                failures.push(format!("{preset} g = {gravity}: {worst}"));
+            }
+        }
+    }
+    assert!(failures.is_empty(), "energy changed by ≥ 5 %: {failures:?}");
+}
+
+/// 50 balls, e = 1, no friction, in a closed box of static walls with e = 1, 10,000 steps;
+/// returns the largest relative change of the total energy (kinetic + potential).
+fn elastic_box(preset: PhysicsPreset, gravity: f32) -> f32 {
+    let s = PhysicsSettings {
+        gravity: Vec3::Y * -gravity,
+        ..settings(preset, 0.0)
+    };
+    let mut w = PhysicsWorld::new(s);
+    let half = 2.0;
+    let wall = 0.5;
+    let walls = w.insert_body(RigidBodyDesc::fixed());
+    for axis in 0..3 {
+        for side in [-1.0f32, 1.0] {
+            let mut he = Vec3::splat(half + wall);
+            he[axis] = wall;
+            let mut c = Vec3::ZERO;
+            c[axis] = side * (half + wall);
+            w.insert_collider(
+                ColliderDesc::cuboid(he.x, he.y, he.z)
+                    .translation(c)
+                    .restitution(1.0)
+                    .friction(0.0),
+                walls,
+            );
+        }
+    }
+    let mut rng = Rng(15);
+    let r = 0.15;
+    let mut balls = Vec::new();
+    for i in 0..50 {
+        let cell = Vec3::new((i % 5) as f32, ((i / 5) % 5) as f32, (i / 25) as f32);
+        let p = (cell - Vec3::new(2.0, 2.0, 0.5)) * 0.7 + rng.vec3(-0.05, 0.05);
+        let b = w.insert_body(
+            RigidBodyDesc::dynamic()
+                .translation(p)
+                .linvel(rng.vec3(-3.0, 3.0)),
+        );
+        w.insert_collider(ColliderDesc::sphere(r).restitution(1.0).friction(0.0), b);
+        balls.push(b);
+    }
+    let energy = |w: &PhysicsWorld| -> f32 {
+        balls
+            .iter()
+            .map(|&b| {
+                let body = w.body(b).unwrap();
+                let m = body.mass();
+                0.5 * m * body.linvel().length_squared() + m * gravity * body.translation().y
+            })
+            .sum()
+    };
+    // Potential energy measured from the floor, so the figure is not dominated by it.
+    let floor = -half + r;
+    let e_of = |w: &PhysicsWorld| {
+        energy(w)
+            - balls
+                .iter()
+                .map(|&b| w.body(b).unwrap().mass())
+                .sum::<f32>()
+                * gravity
+                * floor
+    };
+    let e0 = e_of(&w);
+    let mut worst = 0.0f32;
+    for i in 0..10_000 {
+        w.step();
+        if i % 100 == 99 {
+            worst = worst.max((e_of(&w) / e0 - 1.0).abs());
+        }
+    }
+    let e1 = e_of(&w);
+    println!(
+        "{preset}, g = {gravity}: energy after 10,000 steps {:.4} of the start, worst {worst:.4} \
+         (expected 1, ± 5 %)",
+        e1 / e0
+    );
+    worst
+}
