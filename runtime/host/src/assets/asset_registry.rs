@@ -32,6 +32,31 @@ impl AssetRegistry {
         self.root.join(path)
     }
 
+    /// The path a file named `written` inside a file in `folder` (a scene) is registered
+    /// under: a relative path is looked for beside that file first, then as the host always
+    /// read it (from the asset root: the working directory by default), then beside each
+    /// folder above that file (a scene in `assets/scenes/` naming `assets/models/x.obj`), so
+    /// the same scene shows the same models from any working directory. Found nowhere, it is
+    /// kept as written (the load error then names it).
+    pub fn find_beside(&self, folder: &Path, written: &Path) -> PathBuf {
+        if written.is_absolute() || written.as_os_str().is_empty() {
+            return written.to_path_buf();
+        }
+        let beside = folder.join(written);
+        if beside.is_file() {
+            return beside;
+        }
+        if self.resolve(written).is_file() {
+            return written.to_path_buf();
+        }
+        folder
+            .ancestors()
+            .skip(1)
+            .map(|up| up.join(written))
+            .find(|candidate| candidate.is_file())
+            .unwrap_or_else(|| written.to_path_buf())
+    }
+
     /// The id of the model at `path`, registering it if new.
     pub fn mesh(&mut self, path: &Path) -> MeshId {
         if let Some(id) = self.mesh_ids.get(path) {
