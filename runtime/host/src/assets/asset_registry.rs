@@ -117,6 +117,33 @@ mod tests {
     use super::*;
 
     #[test]
+    fn scene_paths_are_found_beside_the_scene_then_above_it() {
+        //! A scene's models were looked for in the working directory only: the same scene
+        //! run from elsewhere showed checker cubes.
+        let root = std::env::temp_dir().join(format!("onyx-beside-{}", std::process::id()));
+        let scenes = root.join("assets/scenes");
+        let _ = std::fs::create_dir_all(&scenes);
+        let _ = std::fs::create_dir_all(root.join("assets/models"));
+        std::fs::write(scenes.join("near.obj"), "v 0 0 0").unwrap_or_else(|e| panic!("{e}"));
+        std::fs::write(root.join("assets/models/far.obj"), "v 0 0 0")
+            .unwrap_or_else(|e| panic!("{e}"));
+        let registry = AssetRegistry::new(std::env::temp_dir().join("onyx-no-such-root"));
+        assert_eq!(
+            registry.find_beside(&scenes, Path::new("near.obj")),
+            scenes.join("near.obj")
+        );
+        assert_eq!(
+            registry.find_beside(&scenes, Path::new("assets/models/far.obj")),
+            root.join("assets/models/far.obj")
+        );
+        assert_eq!(
+            registry.find_beside(&scenes, Path::new("gone.obj")),
+            Path::new("gone.obj")
+        );
+        let _ = std::fs::remove_dir_all(&root);
+    }
+
+    #[test]
     fn one_id_per_path_and_back() {
         let mut r = AssetRegistry::default();
         let a = r.mesh(Path::new("a.obj"));
