@@ -1,8 +1,14 @@
 // Wireframe: triangle edges in the material colour, drawn from barycentric coordinates
-// (no line primitives, so the output is identical on every rasteriser). The mesh is drawn
-// unindexed, three vertices per triangle, so `vertex_index % 3` names the corner.
+// (no line primitives, so the output is identical on every rasteriser). The mesh's own
+// vertex and index buffers are read as storage: the draw runs one vertex per index, so
+// `vertex_index % 3` names the corner, and no unindexed copy of the mesh is kept.
 
 const WIRE_WIDTH_PX: f32 = 1.0;
+// Floats per vertex in the mesh buffer: position (3), normal (3), uv (2).
+const VERTEX_FLOATS: u32 = 8u;
+
+@group(1) @binding(0) var<storage, read> mesh_vertices: array<f32>;
+@group(1) @binding(1) var<storage, read> mesh_indices: array<u32>;
 
 struct WireOut {
     @builtin(position) clip_position: vec4<f32>,
@@ -11,7 +17,12 @@ struct WireOut {
 };
 
 @vertex
-fn vs_main(@builtin(vertex_index) vertex_index: u32, vertex: VertexIn, instance: InstanceIn) -> WireOut {
+fn vs_main(@builtin(vertex_index) vertex_index: u32, instance: InstanceIn) -> WireOut {
+    let base = mesh_indices[vertex_index] * VERTEX_FLOATS;
+    var vertex: VertexIn;
+    vertex.position = vec3<f32>(mesh_vertices[base], mesh_vertices[base + 1u], mesh_vertices[base + 2u]);
+    vertex.normal = vec3<f32>(mesh_vertices[base + 3u], mesh_vertices[base + 4u], mesh_vertices[base + 5u]);
+    vertex.uv = vec2<f32>(mesh_vertices[base + 6u], mesh_vertices[base + 7u]);
     let mesh = transform_mesh_vertex(vertex, instance);
     var out: WireOut;
     out.clip_position = mesh.clip_position;

@@ -43,7 +43,7 @@
 //! Each fallible operation has its own error enum naming the file or object at fault.
 //! GPU validation errors and device loss never panic: they are logged with `tracing` and
 //! queued as [`GraphicsEvent`]s for the host to drain ([`Renderer::drain_events`]).
-//! Failed assets have visible fallbacks (magenta checker texture, checker cube).
+//! Failed assets have visible fallbacks (the missing-texture placeholder, a placeholder cube).
 //!
 //! # Modules
 //! Each file holds one type named after it.
@@ -51,6 +51,8 @@
 /// Depth buffer format of every target.
 pub const DEPTH_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::Depth32Float;
 
+/// Reading asset files: regular files only, any text encoding, paths from other systems.
+pub mod asset_io;
 /// Handles of the procedural meshes every renderer uploads.
 mod builtin_meshes;
 /// Perspective / orthographic camera.
@@ -71,8 +73,10 @@ mod graphics_event;
 mod light;
 /// Object material (colour, texture, shading mode).
 mod material;
-/// Meshes: data, procedural shapes, OBJ loading, cache.
+/// Meshes: data, procedural shapes, model files (OBJ, glTF), cache.
 pub mod mesh;
+/// Materials as model files describe them (metallic-roughness), carried in loaded models.
+pub mod model_material;
 /// Offscreen render target with image readback.
 mod offscreen;
 /// What a caller draws over a finished frame.
@@ -106,6 +110,7 @@ mod surface_target_error;
 /// Textures: loading, mipmaps, cache, fallbacks.
 pub mod texture;
 
+pub use asset_io::{AssetReadError, AssetWarning};
 pub use builtin_meshes::{BuiltinMeshes, BUILTIN_RINGS, BUILTIN_SEGMENTS};
 pub use camera::{Camera, Projection};
 pub use debug_lines::{DebugCategories, DebugLine};
@@ -117,7 +122,11 @@ pub use graphics_event::GraphicsEvent;
 pub use image;
 pub use light::{DirectionalLight, Lights, PointLight, MAX_POINT_LIGHTS};
 pub use material::Material;
-pub use mesh::{InvalidMeshError, MeshData, MeshHandle, Model, ModelLoadError, ModelPart, Vertex};
+pub use mesh::{
+    ImportSettings, InvalidMeshError, MeshData, MeshHandle, Model, ModelLoadError, ModelPart,
+    ModelSource, NormalMode, PartSource, UpAxis, Vertex,
+};
+pub use model_material::ModelMaterial;
 pub use offscreen::{OffscreenTarget, OFFSCREEN_FORMAT};
 pub use overlay::Overlay;
 pub use pipeline::{ShaderError, ShaderReloadError, ShaderSource};
@@ -132,5 +141,5 @@ pub use renderer_init_error::RendererInitError;
 pub use shading_mode::ShadingMode;
 pub use surface_target::SurfaceTarget;
 pub use surface_target_error::SurfaceTargetError;
-pub use texture::{TextureHandle, TextureLoadError};
+pub use texture::{TextureHandle, TextureLoadError, TextureSource};
 pub use wgpu;

@@ -80,21 +80,25 @@ impl Renderer {
             }],
         });
         let mut meshes = MeshCache::default();
+        let storage = &pipelines.layouts().mesh_storage;
         let builtin = BuiltinMeshes {
-            cube: meshes.add(&device, &MeshData::cube(1.0), "onyx cube"),
+            cube: meshes.add(&device, storage, &MeshData::cube(1.0), "onyx cube"),
             sphere: meshes.add(
                 &device,
+                storage,
                 &MeshData::sphere(0.5, BUILTIN_SEGMENTS, BUILTIN_RINGS),
                 "onyx sphere",
             ),
-            plane: meshes.add(&device, &MeshData::plane(1.0), "onyx plane"),
+            plane: meshes.add(&device, storage, &MeshData::plane(1.0), "onyx plane"),
             capsule: meshes.add(
                 &device,
+                storage,
                 &MeshData::capsule(0.25, 0.5, BUILTIN_SEGMENTS, BUILTIN_RINGS),
                 "onyx capsule",
             ),
             cylinder: meshes.add(
                 &device,
+                storage,
                 &MeshData::cylinder(0.5, 1.0, BUILTIN_SEGMENTS),
                 "onyx cylinder",
             ),
@@ -272,6 +276,7 @@ impl Renderer {
         let meshes = &self.meshes;
         let counts = self.batcher.prepare(
             scene.objects,
+            self.textures.checker(),
             frustum.as_ref(),
             |handle| {
                 meshes.get(handle).map(|m| MeshBounds {

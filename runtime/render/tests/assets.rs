@@ -44,8 +44,8 @@ fn missing_obj_is_a_typed_error_and_the_fallback_cube_draws() {
     let mut renderer = common::renderer();
     let path = common::assets().join("models/no_such_model.obj");
     match renderer.load_model(&path) {
-        Err(ModelLoadError::ObjRead { path: p, .. }) => assert_eq!(p, path),
-        other => panic!("expected ObjRead, got {other:?}"),
+        Err(ModelLoadError::Read { path: p, .. }) => assert_eq!(p, path),
+        other => panic!("expected Read, got {other:?}"),
     }
     let (model, problems) = renderer.load_model_or_fallback(&path);
     assert_eq!(problems.len(), 1);
@@ -214,7 +214,9 @@ fn normals_are_generated_when_the_obj_has_none() {
         Ok(model) => model,
         Err(error) => panic!("{error}"),
     };
-    // Rendered in Normal mode: with generated normals the faces are coloured, not flat +Y green.
+    // Rendered in Normal mode: each face the camera sees shows its own geometric normal
+    // (a tetrahedron's 70° edges are sharper than the default crease angle, so it stays
+    // faceted), not a flat +Y green.
     let objects: Vec<DrawObject> = model
         .draw_objects(Mat4::IDENTITY)
         .map(|mut o| {
@@ -223,21 +225,53 @@ fn normals_are_generated_when_the_obj_has_none() {
         })
         .collect();
     let lights = Lights::default();
-    let camera = Camera::perspective_look_at(Vec3::new(0.0, 0.5, 3.0), Vec3::ZERO, 1.0, 0.1, 10.0);
+    let eye = Vec3::new(-2.2, 1.6, 1.6);
+    let camera = Camera::perspective_look_at(eye, Vec3::ZERO, 1.0, 0.1, 10.0);
     let image = common::render_image(
         &mut renderer,
         48,
         48,
         &RenderScene::new(camera, &lights).with_objects(&objects),
     );
-    let mut colours: Vec<[u8; 4]> = image.pixels().map(|p| p.0).collect();
-    colours.sort_unstable();
-    colours.dedup();
-    assert!(
-        colours.len() > 20,
-        "expected varied normal colours, got {} distinct",
-        colours.len()
-    );
+    let corners = [
+        Vec3::new(0.0, 1.0, 0.0),
+        Vec3::new(-1.0, -0.5, 0.8),
+        Vec3::new(1.0, -0.5, 0.8),
+        Vec3::new(0.0, -0.5, -1.0),
+    ];
+    let srgb = |c: f32| {
+        let c = c.clamp(0.0, 1.0);
+        let e = if c <= 0.003_130_8 {
+            c * 12.92
+        } else {
+            1.055 * c.powf(1.0 / 2.4) - 0.055
+        };
+        (e * 255.0).round() as i32
+    };
+    let centre = corners.iter().copied().sum::<Vec3>() / 4.0;
+    let mut faces_seen = 0;
+    for skip in 0..4 {
+        let face: Vec<Vec3> = (0..4).filter(|&i| i != skip).map(|i| corners[i]).collect();
+        let mut n = (face[1] - face[0]).cross(face[2] - face[0]).normalize();
+        let middle = (face[0] + face[1] + face[2]) / 3.0;
+        if n.dot(middle - centre) < 0.0 {
+            n = -n;
+        }
+        if n.dot(eye - middle) <= 0.2 {
+            continue;
+        }
+        let want = (n * 0.5 + Vec3::splat(0.5)).to_array().map(srgb);
+        let pixels = image
+            .pixels()
+            .filter(|p| (0..3).all(|c| (i32::from(p.0[c]) - want[c]).abs() <= 3))
+            .count();
+        assert!(
+            pixels > 10,
+            "face with normal {n} shows in {pixels} pixels (colour {want:?})"
+        );
+        faces_seen += 1;
+    }
+    assert!(faces_seen >= 2, "the camera should see at least two faces");
 }
 
 #[test]
@@ -252,4 +286,48 @@ fn invalid_mesh_data_is_refused() {
         Ok(handle) => panic!("accepted an out-of-range index as {handle:?}"),
     };
     assert!(error.to_string().contains("bad triangle"), "{error}");
+}
+
+#[test]
+fn the_missing_texture_placeholder_shows_on_black_materials_and_meshes_without_uvs() {
+    //! The checker was multiplied by the material colour (a black or green wall went dark)
+    //! and showed as stripes on meshes without texture coordinates.
+    let dir = std::env::temp_dir().join(format!("onyx-placeholder-{}", std::process::id()));
+    let _ = std::fs::create_dir_all(&dir);
+    let write = |name: &str, text: &str| {
+        std::fs::write(dir.join(name), text).unwrap_or_else(|e| panic!("{e}"));
+    };
+    write("m.mtl", "newmtl black\nKd 0 0 0\nmap_Kd gone.png\n");
+    write(
+        "quad.obj",
+        "mtllib m.mtl\nv -0.5 -0.2 0\nv 1.1 -0.2 0\nv 1.1 0.8 0\nv -0.5 0.8 0\nusemtl black\nf 1 2 3 4\n",
+    );
+    let mut renderer = common::renderer();
+    let (model, problems) = renderer.load_model_or_fallback(dir.join("quad.obj"));
+    assert_eq!(problems.len(), 1, "{problems:?}");
+    let magenta = magenta_share(&mut renderer, &model);
+    assert!(magenta > 0.1, "only {magenta:.3} of the image is magenta");
+    assert!(
+        magenta < 0.9,
+        "the checker's dark cells must show too ({magenta:.3} magenta)"
+    );
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn a_mesh_costs_its_indexed_data_on_the_gpu() {
+    //! Every mesh also uploaded an unindexed copy for the wireframe (3.4× its indexed data).
+    let mut renderer = common::renderer();
+    let sphere = MeshData::sphere(1.0, 64, 32);
+    let (before, _) = renderer.gpu_bytes();
+    if let Err(error) = renderer.add_mesh(&sphere, "sphere") {
+        panic!("{error}");
+    }
+    let (after, _) = renderer.gpu_bytes();
+    let indexed = (sphere.vertices.len() * size_of::<Vertex>() + sphere.indices.len() * 4) as u64;
+    assert_eq!(
+        after - before,
+        indexed,
+        "GPU bytes of one mesh against its indexed data"
+    );
 }

@@ -32,6 +32,31 @@ impl AssetRegistry {
         self.root.join(path)
     }
 
+    /// The path a file named `written` inside a file in `folder` (a scene) is registered
+    /// under: a relative path is looked for beside that file first, then as the host always
+    /// read it (from the asset root: the working directory by default), then beside each
+    /// folder above that file (a scene in `assets/scenes/` naming `assets/models/x.obj`), so
+    /// the same scene shows the same models from any working directory. Found nowhere, it is
+    /// kept as written (the load error then names it).
+    pub fn find_beside(&self, folder: &Path, written: &Path) -> PathBuf {
+        if written.is_absolute() || written.as_os_str().is_empty() {
+            return written.to_path_buf();
+        }
+        let beside = folder.join(written);
+        if beside.is_file() {
+            return beside;
+        }
+        if self.resolve(written).is_file() {
+            return written.to_path_buf();
+        }
+        folder
+            .ancestors()
+            .skip(1)
+            .map(|up| up.join(written))
+            .find(|candidate| candidate.is_file())
+            .unwrap_or_else(|| written.to_path_buf())
+    }
+
     /// The id of the model at `path`, registering it if new.
     pub fn mesh(&mut self, path: &Path) -> MeshId {
         if let Some(id) = self.mesh_ids.get(path) {
@@ -90,6 +115,33 @@ impl AssetRegistry {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn scene_paths_are_found_beside_the_scene_then_above_it() {
+        //! A scene's models were looked for in the working directory only: the same scene
+        //! run from elsewhere showed checker cubes.
+        let root = std::env::temp_dir().join(format!("onyx-beside-{}", std::process::id()));
+        let scenes = root.join("assets/scenes");
+        let _ = std::fs::create_dir_all(&scenes);
+        let _ = std::fs::create_dir_all(root.join("assets/models"));
+        std::fs::write(scenes.join("near.obj"), "v 0 0 0").unwrap_or_else(|e| panic!("{e}"));
+        std::fs::write(root.join("assets/models/far.obj"), "v 0 0 0")
+            .unwrap_or_else(|e| panic!("{e}"));
+        let registry = AssetRegistry::new(std::env::temp_dir().join("onyx-no-such-root"));
+        assert_eq!(
+            registry.find_beside(&scenes, Path::new("near.obj")),
+            scenes.join("near.obj")
+        );
+        assert_eq!(
+            registry.find_beside(&scenes, Path::new("assets/models/far.obj")),
+            root.join("assets/models/far.obj")
+        );
+        assert_eq!(
+            registry.find_beside(&scenes, Path::new("gone.obj")),
+            Path::new("gone.obj")
+        );
+        let _ = std::fs::remove_dir_all(&root);
+    }
 
     #[test]
     fn one_id_per_path_and_back() {

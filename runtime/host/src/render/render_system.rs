@@ -191,11 +191,11 @@ impl RenderSystem {
             };
             let model = match (mesh, assets.mesh_path(id)) {
                 (Some(mesh), _) => Model {
-                    parts: vec![ModelPart {
-                        name: "builtin".into(),
+                    parts: vec![ModelPart::new(
+                        "builtin",
                         mesh,
-                        material: onyx_render::Material::color(1.0, 1.0, 1.0),
-                    }],
+                        onyx_render::Material::color(1.0, 1.0, 1.0),
+                    )],
                 },
                 (None, Some(path)) => {
                     let path = assets.resolve(path);
@@ -297,8 +297,11 @@ impl RenderSystem {
                 if material.shading != onyx_render::ShadingMode::Lit {
                     material.texture = None;
                 }
-                self.objects
-                    .push(DrawObject::new(part.mesh, material, matrix));
+                self.objects.push(DrawObject::new(
+                    part.mesh,
+                    material,
+                    matrix * part.transform,
+                ));
             }
         }
         self.rows = rows;

@@ -13,20 +13,23 @@ use crate::assets::AssetRegistry;
 use crate::entity_id::to_api;
 use crate::world::{builtin_storage, PluginComponents, StoredBlob, WorldRefs};
 
-/// [`FileRefs`] while a scene spawns: assets registered in the host's registry, file ids
-/// resolved to the entities spawned for them.
+/// [`FileRefs`] while a scene spawns: assets registered in the host's registry (found
+/// relative to the scene file), file ids resolved to the entities spawned for them.
 struct SpawnRefs<'a> {
     assets: &'a mut AssetRegistry,
     entities: &'a HashMap<u64, hecs::Entity>,
+    scene_dir: &'a Path,
 }
 
 impl FileRefs for SpawnRefs<'_> {
     fn mesh(&mut self, path: &str) -> MeshId {
-        self.assets.mesh(Path::new(path))
+        let path = self.assets.find_beside(self.scene_dir, Path::new(path));
+        self.assets.mesh(&path)
     }
 
     fn texture(&mut self, path: &str) -> TextureId {
-        self.assets.texture(Path::new(path))
+        let path = self.assets.find_beside(self.scene_dir, Path::new(path));
+        self.assets.texture(&path)
     }
 
     fn entity(&self, file_id: u64) -> Option<Entity> {
@@ -114,6 +117,7 @@ fn prepare(
         let mut refs = SpawnRefs {
             assets: &mut *assets,
             entities: by_id,
+            scene_dir: path.parent().unwrap_or(Path::new("")),
         };
         let builtins = entity
             .builtins(&mut refs)

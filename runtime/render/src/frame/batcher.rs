@@ -15,6 +15,8 @@ use crate::texture::TextureHandle;
 #[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash)]
 pub(crate) struct BatchKey {
     pub(crate) shading: ShadingMode,
+    /// Drawn as the missing-texture placeholder (its texture failed to load).
+    pub(crate) placeholder: bool,
     /// Texture for textured modes (`None` = white); always `None` for untextured modes.
     pub(crate) texture: Option<TextureHandle>,
     pub(crate) mesh: MeshHandle,
@@ -54,10 +56,12 @@ pub(crate) struct Batcher {
 
 impl Batcher {
     /// Culls `objects` against `frustum` (if any) and builds instances and batches. With
-    /// `instancing` off every object gets its own batch.
+    /// `instancing` off every object gets its own batch. Textured objects whose texture is
+    /// `missing` (the checker) are batched as placeholders.
     pub(crate) fn prepare(
         &mut self,
         objects: &[DrawObject],
+        missing: TextureHandle,
         frustum: Option<&Frustum>,
         bounds: impl Fn(MeshHandle) -> Option<MeshBounds>,
         instancing: bool,
@@ -91,6 +95,7 @@ impl Batcher {
             self.order.push((
                 BatchKey {
                     shading,
+                    placeholder: texture == Some(missing),
                     texture,
                     mesh: object.mesh,
                 },
@@ -180,7 +185,7 @@ mod tests {
             })
             .collect();
         let mut batcher = Batcher::default();
-        let counts = batcher.prepare(&objects, None, unit_bounds, true);
+        let counts = batcher.prepare(&objects, TextureHandle(1), None, unit_bounds, true);
         assert_eq!(counts.visible, 100);
         assert_eq!(
             batcher.batches().len(),
@@ -189,7 +194,7 @@ mod tests {
             batcher.batches()
         );
         assert_eq!(batcher.instances().len(), 100);
-        let counts = batcher.prepare(&objects, None, unit_bounds, false);
+        let counts = batcher.prepare(&objects, TextureHandle(1), None, unit_bounds, false);
         assert_eq!((counts.visible, batcher.batches().len()), (100, 100));
     }
 
@@ -212,7 +217,13 @@ mod tests {
                 ..object(0, 0.0, ShadingMode::Unlit)
             },
         ];
-        let counts = Batcher::default().prepare(&objects, Some(&frustum), unit_bounds, true);
+        let counts = Batcher::default().prepare(
+            &objects,
+            TextureHandle(1),
+            Some(&frustum),
+            unit_bounds,
+            true,
+        );
         assert_eq!((counts.visible, counts.culled), (1, 2));
     }
 
@@ -223,6 +234,7 @@ mod tests {
         let objects = vec![object(7, 0.0, ShadingMode::Unlit), nan];
         let counts = Batcher::default().prepare(
             &objects,
+            TextureHandle(1),
             None,
             |m| {
                 (m.0 == 0).then_some(MeshBounds {

@@ -16,7 +16,7 @@ mod instance_raw;
 mod line_raw;
 
 pub(crate) use attachments::Attachments;
-pub(crate) use batcher::{Batcher, MeshBounds};
+pub(crate) use batcher::{BatchKey, Batcher, MeshBounds};
 pub(crate) use frame_uniforms::FrameUniforms;
 pub(crate) use growable_buffer::GrowableBuffer;
 pub(crate) use instance_raw::InstanceRaw;

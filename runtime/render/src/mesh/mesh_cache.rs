@@ -20,11 +20,13 @@ impl MeshCache {
     pub(crate) fn add(
         &mut self,
         device: &wgpu::Device,
+        storage_layout: &wgpu::BindGroupLayout,
         data: &MeshData,
         label: &str,
     ) -> MeshHandle {
         let handle = MeshHandle(self.meshes.len() as u32);
-        self.meshes.push(GpuMesh::upload(device, data, label));
+        self.meshes
+            .push(GpuMesh::upload(device, storage_layout, data, label));
         handle
     }
 
@@ -34,6 +36,11 @@ impl MeshCache {
 
     pub(crate) fn len(&self) -> usize {
         self.meshes.len()
+    }
+
+    /// Bytes of every mesh's GPU buffers.
+    pub(crate) fn bytes(&self) -> u64 {
+        self.meshes.iter().map(GpuMesh::bytes).sum()
     }
 
     pub(crate) fn model(&self, key: &Path) -> Option<&Model> {

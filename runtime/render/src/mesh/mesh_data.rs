@@ -95,13 +95,4 @@ impl MeshData {
             .fold(0.0_f32, f32::max);
         (center, radius)
     }
-
-    /// The triangles unindexed (three vertices per triangle), for barycentric wireframe.
-    #[must_use]
-    pub(crate) fn unindexed_vertices(&self) -> Vec<Vertex> {
-        self.indices
-            .iter()
-            .filter_map(|&i| self.vertices.get(i as usize).copied())
-            .collect()
-    }
 }

@@ -2,37 +2,40 @@
 
 use std::path::PathBuf;
 
+use crate::asset_io::AssetReadError;
 use crate::texture::TextureLoadError;
 
-/// Why [`crate::Renderer::load_model`] failed. Every variant names the file at fault.
+/// Why [`crate::Renderer::load_model`] failed. Every variant names the file at fault, and
+/// the line where the format has lines.
 /// [`crate::Renderer::load_model_or_fallback`] turns these into visible placeholders.
 #[derive(Debug, thiserror::Error)]
 pub enum ModelLoadError {
-    /// The OBJ file could not be opened or read.
-    #[error("could not read model `{}`: {source}; check that the file exists and is readable", path.display())]
-    ObjRead {
-        /// The OBJ file.
+    /// The model file could not be read (missing, unreadable, not a regular file, too large).
+    #[error("model {source}")]
+    Read {
+        /// The model file.
         path: PathBuf,
-        /// I/O error.
+        /// Why (names the file).
         #[source]
-        source: std::io::Error,
+        source: AssetReadError,
     },
-    /// The OBJ file is not valid OBJ.
-    #[error("model `{}` is not a valid OBJ file ({source}); re-export it as Wavefront OBJ", path.display())]
+    /// A statement of the OBJ file is not OBJ.
+    #[error("model `{}`, line {line}: {message}; fix the line or re-export the file as Wavefront OBJ", path.display())]
     ObjParse {
         /// The OBJ file.
         path: PathBuf,
-        /// Parser error.
-        #[source]
-        source: tobj::LoadError,
+        /// 1-based line.
+        line: usize,
+        /// What is wrong.
+        message: String,
     },
-    /// The OBJ file has no triangles.
-    #[error("model `{}` contains no triangles; export faces, not only points or lines", path.display())]
+    /// The file has no faces.
+    #[error("model `{}` contains no faces; export faces, not only points or lines", path.display())]
     Empty {
-        /// The OBJ file.
+        /// The model file.
         path: PathBuf,
     },
-    /// The material library named by `mtllib` is missing or malformed.
+    /// A material library named by `mtllib` could not be read.
     #[error(
         "material library `{}` used by `{}` could not be loaded ({source}); put the .mtl file next \
          to the .obj or fix its `mtllib` line",
@@ -44,19 +47,38 @@ pub enum ModelLoadError {
         obj: PathBuf,
         /// The MTL file it names.
         mtl: PathBuf,
-        /// Parser error.
+        /// Why.
         #[source]
-        source: tobj::LoadError,
+        source: AssetReadError,
     },
     /// A texture named by a material failed to load.
     #[error("material `{material}` of `{}`: {source}", obj.display())]
     Texture {
-        /// The OBJ file.
+        /// The model file.
         obj: PathBuf,
         /// Material name.
         material: String,
         /// Texture error (names the texture file); boxed to keep this enum small.
         #[source]
         source: Box<TextureLoadError>,
+    },
+    /// The glTF file is malformed, or a buffer it needs is missing.
+    #[error("glTF `{}`: {message}", path.display())]
+    Gltf {
+        /// The glTF file.
+        path: PathBuf,
+        /// What is wrong, as a sentence a user can act on.
+        message: String,
+    },
+    /// The glTF file requires an extension Onyx does not implement.
+    #[error(
+        "glTF `{}` requires extension `{extension}`, which Onyx does not support; re-export it without it",
+        path.display()
+    )]
+    RequiredExtension {
+        /// The glTF file.
+        path: PathBuf,
+        /// The extension's name.
+        extension: String,
     },
 }

@@ -14,6 +14,10 @@ pub(crate) struct Layouts {
     pub(crate) frame_only: wgpu::PipelineLayout,
     /// Frame + material (textured meshes).
     pub(crate) textured: wgpu::PipelineLayout,
+    /// Group 1 of the wireframe: one mesh's vertex and index buffers, read as storage.
+    pub(crate) mesh_storage: wgpu::BindGroupLayout,
+    /// Frame + mesh storage (wireframe: vertices pulled by index, no unindexed copy).
+    pub(crate) wireframe: wgpu::PipelineLayout,
 }
 
 impl Layouts {
@@ -62,11 +66,32 @@ impl Layouts {
             bind_group_layouts: &[Some(&frame), Some(&material)],
             immediate_size: 0,
         });
+        let storage = |binding| wgpu::BindGroupLayoutEntry {
+            binding,
+            visibility: wgpu::ShaderStages::VERTEX,
+            ty: wgpu::BindingType::Buffer {
+                ty: wgpu::BufferBindingType::Storage { read_only: true },
+                has_dynamic_offset: false,
+                min_binding_size: None,
+            },
+            count: None,
+        };
+        let mesh_storage = device.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor {
+            label: Some("onyx mesh storage"),
+            entries: &[storage(0), storage(1)],
+        });
+        let wireframe = device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor {
+            label: Some("onyx wireframe"),
+            bind_group_layouts: &[Some(&frame), Some(&mesh_storage)],
+            immediate_size: 0,
+        });
         Self {
             frame,
             material,
             frame_only,
             textured,
+            mesh_storage,
+            wireframe,
         }
     }
 }

@@ -175,8 +175,26 @@ fn create_pipeline(
         Some(layouts::instance_layout()),
     ];
     let line_buffers = [Some(layouts::line_layout())];
+    // The wireframe pulls vertices from storage buffers; slot 1 stays the instances.
+    let wire_buffers = [None, Some(layouts::instance_layout())];
     let (layout, buffers, cull_mode, blend, depth_write, depth_compare): (_, &[_], _, _, _, _) =
         match key.kind {
+            ShaderKind::Mesh(ShadingMode::Wireframe) => (
+                &layouts.wireframe,
+                &wire_buffers,
+                None,
+                None,
+                true,
+                wgpu::CompareFunction::Less,
+            ),
+            ShaderKind::Placeholder => (
+                &layouts.frame_only,
+                &mesh_buffers,
+                Some(wgpu::Face::Back),
+                None,
+                true,
+                wgpu::CompareFunction::Less,
+            ),
             ShaderKind::Mesh(mode) => (
                 if mode.uses_texture() {
                     &layouts.textured
@@ -184,11 +202,7 @@ fn create_pipeline(
                     &layouts.frame_only
                 },
                 &mesh_buffers,
-                if mode == ShadingMode::Wireframe {
-                    None
-                } else {
-                    Some(wgpu::Face::Back)
-                },
+                Some(wgpu::Face::Back),
                 None,
                 true,
                 wgpu::CompareFunction::Less,

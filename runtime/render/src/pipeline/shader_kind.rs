@@ -11,11 +11,13 @@ pub(crate) enum ShaderKind {
     Grid,
     /// Debug lines.
     DebugLines,
+    /// The missing-texture placeholder, drawn for objects whose texture failed.
+    Placeholder,
 }
 
 impl ShaderKind {
     /// Every shader, in a stable order.
-    pub(crate) const ALL: [ShaderKind; 7] = [
+    pub(crate) const ALL: [ShaderKind; 8] = [
         ShaderKind::Mesh(ShadingMode::Unlit),
         ShaderKind::Mesh(ShadingMode::LitLow),
         ShaderKind::Mesh(ShadingMode::Lit),
@@ -23,6 +25,7 @@ impl ShaderKind {
         ShaderKind::Mesh(ShadingMode::Wireframe),
         ShaderKind::Grid,
         ShaderKind::DebugLines,
+        ShaderKind::Placeholder,
     ];
 
     /// File name inside the shader folder.
@@ -31,6 +34,7 @@ impl ShaderKind {
             ShaderKind::Mesh(mode) => mode.shader_file(),
             ShaderKind::Grid => "grid.wgsl",
             ShaderKind::DebugLines => "debug_lines.wgsl",
+            ShaderKind::Placeholder => "placeholder.wgsl",
         }
     }
 }

@@ -33,6 +33,10 @@ const EMBEDDED: &[(&str, &str)] = &[
         "debug_lines.wgsl",
         include_str!("../../../../shaders/debug_lines.wgsl"),
     ),
+    (
+        "placeholder.wgsl",
+        include_str!("../../../../shaders/placeholder.wgsl"),
+    ),
 ];
 
 /// Where shader text is read from.

@@ -1,5 +1,7 @@
-//! Asset loading on [`Renderer`]: meshes, textures and OBJ models, cached by path, with
-//! visible fallbacks (magenta checker, checker cube) for files that fail.
+//! Asset loading on [`Renderer`]: meshes, textures and model files, cached by path, with
+//! visible fallbacks (the missing-texture placeholder, a placeholder cube) for files that
+//! fail. Reading and decoding ([`ModelSource::load`]) need no GPU and may run on another
+//! thread; [`Renderer::upload_model`] is the GPU half.
 
 use std::path::Path;
 
@@ -9,10 +11,12 @@ use super::Renderer;
 use crate::builtin_meshes::BuiltinMeshes;
 use crate::material::Material;
 use crate::mesh::{
-    cache_key, load_obj, InvalidMeshError, MeshData, MeshHandle, Model, ModelLoadError, ModelPart,
+    cache_key, ImportSettings, InvalidMeshError, MeshData, MeshHandle, Model, ModelLoadError,
+    ModelPart, ModelSource,
 };
+use crate::model_material::ImageSource;
 use crate::shading_mode::ShadingMode;
-use crate::texture::{TextureHandle, TextureLoadError};
+use crate::texture::{decode_texture, TextureHandle, TextureLoadError, TextureSource};
 
 impl Renderer {
     /// Handles of the built-in procedural meshes (cube, sphere, plane, capsule, cylinder).
@@ -37,7 +41,8 @@ impl Renderer {
                 indices: data.indices.len(),
             });
         }
-        Ok(self.meshes.add(self.gpu.device(), data, label))
+        let storage = &self.pipelines.layouts().mesh_storage;
+        Ok(self.meshes.add(self.gpu.device(), storage, data, label))
     }
 
     /// Number of meshes uploaded so far (built-ins included).
@@ -46,43 +51,80 @@ impl Renderer {
         self.meshes.len()
     }
 
+    /// GPU bytes of every mesh's buffers (vertices and indices) and of every texture's
+    /// levels, uploaded so far.
+    #[must_use]
+    pub fn gpu_bytes(&self) -> (u64, u64) {
+        (self.meshes.bytes(), self.textures.bytes())
+    }
+
+    /// The largest texture side this device takes, pixels: larger images are scaled down.
+    #[must_use]
+    pub fn max_texture_side(&self) -> u32 {
+        self.gpu.device().limits().max_texture_dimension_2d
+    }
+
     /// Uploads an sRGB image as a texture, with mipmaps.
     pub fn add_texture(&mut self, image: &RgbaImage, label: &str) -> TextureHandle {
         let layout = &self.pipelines.layouts().material;
+        let source = TextureSource::from_image(image.clone(), true);
         self.textures.add(
             self.gpu.device(),
             self.gpu.queue(),
             layout,
-            image,
-            true,
+            &source.levels,
             label,
         )
     }
 
-    /// Loads a PNG or JPEG file as a texture with mipmaps. A file is loaded once; later calls
-    /// return the same handle.
+    /// Loads a PNG or JPEG file as a texture with mipmaps (scaled down to fit the GPU, with
+    /// a warning). A file is loaded once; later calls return the same handle.
     ///
     /// # Errors
-    /// [`TextureLoadError`] naming the file when it cannot be read, decoded or is too large.
+    /// [`TextureLoadError`] naming the file when it cannot be read or decoded.
     pub fn load_texture(
         &mut self,
         path: impl AsRef<Path>,
     ) -> Result<TextureHandle, TextureLoadError> {
+        let source = ImageSource::File(path.as_ref().to_owned());
+        if let Some(handle) = self.textures.cached(&source) {
+            return Ok(handle);
+        }
+        let decoded = decode_texture(&source, self.max_texture_side())?;
+        if let Some(warning) = &decoded.warning {
+            tracing::warn!("{warning}");
+        }
+        Ok(self.upload_texture(&source, &decoded))
+    }
+
+    /// Uploads a decoded texture for `source` (once per source).
+    pub fn upload_texture(
+        &mut self,
+        source: &ImageSource,
+        texture: &TextureSource,
+    ) -> TextureHandle {
         let layout = &self.pipelines.layouts().material;
         self.textures
-            .load(self.gpu.device(), self.gpu.queue(), layout, path.as_ref())
+            .insert(self.gpu.device(), self.gpu.queue(), layout, source, texture)
     }
 
     /// Like [`Renderer::load_texture`], but a failure gives the magenta checker
-    /// ([`Renderer::fallback_texture`]) along with the error, so drawing can go on.
+    /// ([`Renderer::fallback_texture`]) along with the error, so drawing can go on. A file
+    /// that failed before fails again without being read, and without an error (it was
+    /// reported the first time).
     pub fn load_texture_or_fallback(
         &mut self,
         path: impl AsRef<Path>,
     ) -> (TextureHandle, Option<TextureLoadError>) {
+        let source = ImageSource::File(path.as_ref().to_owned());
+        if self.textures.has_failed(&source) {
+            return (self.textures.checker(), None);
+        }
         match self.load_texture(path) {
             Ok(handle) => (handle, None),
             Err(error) => {
-                tracing::warn!(%error, "texture replaced by the fallback checker");
+                self.textures.mark_failed(&source);
+                tracing::warn!(%error, "texture replaced by the missing-texture placeholder");
                 (self.textures.checker(), Some(error))
             }
         }
@@ -94,110 +136,145 @@ impl Renderer {
         self.textures.get(texture).map(|t| t.size())
     }
 
-    /// The magenta / black checker shown in place of missing textures.
+    /// The magenta / dark checker standing for missing textures. Objects drawn with it show
+    /// the missing-texture placeholder: a magenta checker in world space, whatever their
+    /// colour and texture coordinates.
     #[must_use]
     pub fn fallback_texture(&self) -> TextureHandle {
         self.textures.checker()
     }
 
-    /// A checker-textured cube, shown in place of a model that failed to load.
+    /// A placeholder cube, shown in place of a model that failed to load.
     #[must_use]
     pub fn fallback_model(&self) -> Model {
         Model {
-            parts: vec![ModelPart {
-                name: "fallback".to_owned(),
-                mesh: self.builtin.cube,
-                material: Material::textured(self.textures.checker()),
-            }],
+            parts: vec![ModelPart::new(
+                "fallback",
+                self.builtin.cube,
+                Material::textured(self.textures.checker()),
+            )],
         }
     }
 
-    /// Loads an OBJ file with its MTL and textures: one [`ModelPart`] per material,
-    /// triangulated, normals generated when missing, [`ShadingMode::Lit`]. A file that
-    /// loaded without problems is cached: later calls return the same handles.
+    /// Loads a model file (OBJ with its MTL and textures) with default import settings: one
+    /// [`ModelPart`] per material, triangulated, normals generated when missing,
+    /// [`ShadingMode::Lit`]. A file that loaded without problems is cached: later calls
+    /// return the same handles.
     ///
     /// # Errors
     /// [`ModelLoadError`] naming the file at fault (OBJ, MTL or texture). Use
     /// [`Renderer::load_model_or_fallback`] to get something drawable anyway.
     pub fn load_model(&mut self, path: impl AsRef<Path>) -> Result<Model, ModelLoadError> {
-        let (model, problems) = self.load_model_parts(path.as_ref())?;
+        let (model, problems) = self.load_model_parts(path.as_ref(), &ImportSettings::default())?;
         match problems.into_iter().next() {
             Some(first) => Err(first),
             None => Ok(model),
         }
     }
 
-    /// Loads what it can of an OBJ file and returns every problem met: a missing or broken
-    /// texture becomes the magenta checker, a missing MTL gives checker-textured parts, an
-    /// unreadable or malformed OBJ gives [`Renderer::fallback_model`]. Problems are also
+    /// Loads what it can of a model file and returns every problem met: a missing or broken
+    /// texture becomes the placeholder, a missing MTL gives placeholder parts, an
+    /// unreadable or malformed file gives [`Renderer::fallback_model`]. Problems are also
     /// logged.
     pub fn load_model_or_fallback(
         &mut self,
         path: impl AsRef<Path>,
     ) -> (Model, Vec<ModelLoadError>) {
-        let (model, problems) = match self.load_model_parts(path.as_ref()) {
-            Ok(loaded) => loaded,
-            Err(error) => (self.fallback_model(), vec![error]),
-        };
-        for problem in &problems {
-            tracing::warn!(error = %problem, "model loaded with a fallback");
-        }
-        (model, problems)
+        self.load_model_with(path.as_ref(), &ImportSettings::default())
     }
 
-    /// Loads the model, turning non-fatal problems into fallbacks listed beside it.
+    /// [`Renderer::load_model_or_fallback`] with import settings (scale, up axis, normals).
+    pub fn load_model_with(
+        &mut self,
+        path: &Path,
+        settings: &ImportSettings,
+    ) -> (Model, Vec<ModelLoadError>) {
+        match self.load_model_parts(path, settings) {
+            Ok(loaded) => loaded,
+            Err(error) => {
+                tracing::warn!(%error, "model replaced by the placeholder cube");
+                (self.fallback_model(), vec![error])
+            }
+        }
+    }
+
+    /// Reads the model on this thread (or returns the cached one), then uploads it.
     fn load_model_parts(
         &mut self,
         path: &Path,
+        settings: &ImportSettings,
     ) -> Result<(Model, Vec<ModelLoadError>), ModelLoadError> {
         let key = cache_key(path);
-        if let Some(model) = self.meshes.model(&key) {
-            return Ok((model.clone(), Vec::new()));
+        if *settings == ImportSettings::default() {
+            if let Some(model) = self.meshes.model(&key) {
+                return Ok((model.clone(), Vec::new()));
+            }
         }
-        let obj = load_obj(path)?;
-        let mut problems = obj.problems;
-        let mtl_failed = problems
-            .iter()
-            .any(|p| matches!(p, ModelLoadError::Mtl { .. }));
-        let mut parts = Vec::with_capacity(obj.parts.len());
-        for part in obj.parts {
+        let source = ModelSource::load(path, settings, self.max_texture_side())?;
+        let cache = *settings == ImportSettings::default();
+        let (model, problems) = self.upload_model(source);
+        if cache && problems.is_empty() {
+            self.meshes.insert_model(key, model.clone());
+        }
+        Ok((model, problems))
+    }
+
+    /// Uploads a model read on the CPU: its meshes, its decoded images (each once per
+    /// renderer), materials drawn as their base colour × base-colour texture. A part whose
+    /// texture or material library failed shows the missing-texture placeholder. Returns the
+    /// model and the source's problems, each logged once.
+    pub fn upload_model(&mut self, source: ModelSource) -> (Model, Vec<ModelLoadError>) {
+        let ModelSource {
+            path,
+            parts: sources,
+            images,
+            problems,
+            ..
+        } = source;
+        for problem in &problems {
+            tracing::warn!(error = %problem, "model loaded with a placeholder");
+            if let ModelLoadError::Texture { source, .. } = problem {
+                self.textures
+                    .mark_failed(&ImageSource::File(source.path().to_owned()));
+            }
+        }
+        let mut parts = Vec::with_capacity(sources.len());
+        for part in sources {
             let label = format!("{}#{}", path.display(), part.name);
-            let mesh = self.meshes.add(self.gpu.device(), &part.mesh, &label);
-            let material = match part.material {
-                Some(obj_material) => {
-                    let texture = obj_material.texture.as_ref().map(|texture_path| {
-                        match self.load_texture(texture_path) {
-                            Ok(handle) => handle,
-                            Err(source) => {
-                                problems.push(ModelLoadError::Texture {
-                                    obj: path.to_owned(),
-                                    material: obj_material.name.clone(),
-                                    source: Box::new(source),
-                                });
-                                self.textures.checker()
-                            }
-                        }
-                    });
-                    let [r, g, b] = obj_material.diffuse;
-                    Material {
-                        color: [r, g, b, 1.0],
-                        texture,
-                        shading: ShadingMode::Lit,
-                    }
+            let Ok(mesh) = self.add_mesh(&part.mesh, &label) else {
+                continue;
+            };
+            let mut file_material = part.material;
+            let texture = match file_material.base_color_texture.as_mut() {
+                None => None,
+                Some(slot) => {
+                    let handle = match (self.textures.cached(&slot.image), images.get(&slot.image))
+                    {
+                        (Some(handle), _) => handle,
+                        (None, Some(Some(decoded))) => self.upload_texture(&slot.image, decoded),
+                        _ => self.textures.checker(),
+                    };
+                    slot.handle = Some(handle);
+                    Some(handle)
                 }
-                None if mtl_failed => Material::textured(self.textures.checker()),
-                None => Material::default(),
+            };
+            let material = if part.material_missing {
+                Material::textured(self.textures.checker())
+            } else {
+                Material {
+                    color: file_material.base_color,
+                    texture,
+                    shading: ShadingMode::Lit,
+                }
             };
             parts.push(ModelPart {
                 name: part.name,
                 mesh,
                 material,
+                file_material,
+                transform: part.transform,
             });
         }
-        let model = Model { parts };
-        if problems.is_empty() {
-            self.meshes.insert_model(key, model.clone());
-        }
-        Ok((model, problems))
+        (Model { parts }, problems)
     }
 }

@@ -2,6 +2,7 @@
 //! batches, then the grid, then debug lines).
 
 use super::Renderer;
+use crate::frame::BatchKey;
 use crate::pipeline::{PipelineKey, ShaderKind};
 use crate::render_target::sealed::TargetFrame;
 use crate::shading_mode::ShadingMode;
@@ -31,11 +32,10 @@ impl Renderer {
         let device = self.gpu.device().clone();
         let mut last = None;
         for batch in self.batcher.batches() {
-            if last != Some(batch.key.shading) {
-                last = Some(batch.key.shading);
-                let _ = self
-                    .pipelines
-                    .get(&device, key(ShaderKind::Mesh(batch.key.shading)));
+            let kind = shader_of(batch.key);
+            if last != Some(kind) {
+                last = Some(kind);
+                let _ = self.pipelines.get(&device, key(kind));
             }
         }
         if draw_grid {
@@ -88,21 +88,21 @@ impl Renderer {
         if !self.batcher.instances().is_empty() {
             pass.set_vertex_buffer(1, self.instance_buffer.buffer().slice(..));
         }
-        let mut current: Option<(ShadingMode, bool)> = None;
+        let mut current: Option<(ShaderKind, bool)> = None;
         for batch in self.batcher.batches() {
-            let shading = batch.key.shading;
-            if current.map(|(mode, _)| mode) != Some(shading) {
-                let pipeline = self.pipelines.cached(&key(ShaderKind::Mesh(shading)));
+            let kind = shader_of(batch.key);
+            if current.map(|(k, _)| k) != Some(kind) {
+                let pipeline = self.pipelines.cached(&key(kind));
                 if let Some(pipeline) = pipeline {
                     pass.set_pipeline(pipeline);
                 }
-                current = Some((shading, pipeline.is_some()));
+                current = Some((kind, pipeline.is_some()));
             }
             let Some((_, true)) = current else { continue };
             let Some(mesh) = self.meshes.get(batch.key.mesh) else {
                 continue;
             };
-            if shading.uses_texture() {
+            if kind == ShaderKind::Mesh(ShadingMode::Lit) {
                 let handle = batch.key.texture.unwrap_or(self.textures.white());
                 let texture = self
                     .textures
@@ -113,9 +113,10 @@ impl Renderer {
                 }
             }
             let instances = batch.first_instance..batch.first_instance + batch.instance_count;
-            if shading == ShadingMode::Wireframe {
-                pass.set_vertex_buffer(0, mesh.wire_buffer.slice(..));
-                pass.draw(0..mesh.wire_vertex_count, instances);
+            if kind == ShaderKind::Mesh(ShadingMode::Wireframe) {
+                // One vertex per index, pulled from the mesh's own buffers (no copy).
+                pass.set_bind_group(1, &mesh.wire_bind_group, &[]);
+                pass.draw(0..mesh.index_count, instances);
             } else {
                 pass.set_vertex_buffer(0, mesh.vertex_buffer.slice(..));
                 pass.set_index_buffer(mesh.index_buffer.slice(..), wgpu::IndexFormat::Uint32);
@@ -140,5 +141,14 @@ impl Renderer {
             }
         }
         draws
+    }
+}
+
+/// The shader a batch is drawn with.
+fn shader_of(key: BatchKey) -> ShaderKind {
+    if key.placeholder {
+        ShaderKind::Placeholder
+    } else {
+        ShaderKind::Mesh(key.shading)
     }
 }

@@ -12,22 +12,22 @@ pub(crate) struct GpuTexture {
 }
 
 impl GpuTexture {
-    /// Uploads `image` (sRGB) with a full mip chain when `mips` is true.
+    /// Uploads `levels` (sRGB): level 0, then each mip level below it.
     pub(crate) fn upload(
         device: &wgpu::Device,
         queue: &wgpu::Queue,
         layout: &wgpu::BindGroupLayout,
         sampler: &wgpu::Sampler,
-        image: &RgbaImage,
-        mips: bool,
+        levels: &[RgbaImage],
         label: &str,
     ) -> Self {
-        let (width, height) = image.dimensions();
-        let levels = if mips {
-            mipmaps::generate_mips(image)
+        let fallback = RgbaImage::from_pixel(1, 1, image::Rgba([255; 4]));
+        let levels = if levels.is_empty() {
+            std::slice::from_ref(&fallback)
         } else {
-            Vec::new()
+            levels
         };
+        let (width, height) = levels[0].dimensions();
         let texture = device.create_texture(&wgpu::TextureDescriptor {
             label: Some(label),
             size: wgpu::Extent3d {
@@ -35,18 +35,15 @@ impl GpuTexture {
                 height,
                 depth_or_array_layers: 1,
             },
-            mip_level_count: if mips {
-                mipmaps::mip_level_count(width, height)
-            } else {
-                1
-            },
+            mip_level_count: (levels.len() as u32).min(mipmaps::mip_level_count(width, height)),
             sample_count: 1,
             dimension: wgpu::TextureDimension::D2,
             format: wgpu::TextureFormat::Rgba8UnormSrgb,
             usage: wgpu::TextureUsages::TEXTURE_BINDING | wgpu::TextureUsages::COPY_DST,
             view_formats: &[],
         });
-        for (level, img) in std::iter::once(image).chain(levels.iter()).enumerate() {
+        let count = (levels.len() as u32).min(mipmaps::mip_level_count(width, height)) as usize;
+        for (level, img) in levels.iter().take(count).enumerate() {
             let (w, h) = img.dimensions();
             queue.write_texture(
                 wgpu::TexelCopyTextureInfo {

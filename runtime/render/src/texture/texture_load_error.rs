@@ -2,21 +2,23 @@
 
 use std::path::PathBuf;
 
+use crate::asset_io::AssetReadError;
+
 /// Why [`crate::Renderer::load_texture`] failed; names the file.
-/// [`crate::Renderer::load_texture_or_fallback`] shows a magenta checker instead.
+/// [`crate::Renderer::load_texture_or_fallback`] shows the missing-texture placeholder instead.
 #[derive(Debug, thiserror::Error)]
 pub enum TextureLoadError {
-    /// The file could not be read.
-    #[error("could not read texture `{}`: {source}; check that the file exists", path.display())]
+    /// The file could not be read (missing, unreadable, not a regular file, too large).
+    #[error("texture {source}")]
     Read {
         /// The image file.
         path: PathBuf,
-        /// I/O error.
+        /// Why (names the file).
         #[source]
-        source: std::io::Error,
+        source: AssetReadError,
     },
-    /// The file is not a PNG or JPEG image this build can decode, or it is corrupt.
-    #[error("texture `{}` could not be decoded ({source}); save it as PNG or JPEG", path.display())]
+    /// The file is a PNG or JPEG, but corrupt or truncated.
+    #[error("texture `{}` is damaged and could not be decoded ({source}); re-export it", path.display())]
     Decode {
         /// The image file.
         path: PathBuf,
@@ -24,9 +26,17 @@ pub enum TextureLoadError {
         #[source]
         source: image::ImageError,
     },
-    /// The image is larger than the adapter allows.
+    /// The file is not an image format this build decodes.
+    #[error("texture `{}` is {format}; Onyx reads PNG and JPEG: convert it to one of those", path.display())]
+    Unsupported {
+        /// The image file.
+        path: PathBuf,
+        /// What it is, as a phrase ("a Tga image").
+        format: String,
+    },
+    /// The image has more pixels than Onyx decodes (seen in its header, before decoding).
     #[error(
-        "texture `{}` is {width}×{height} pixels, larger than this GPU's limit of {max}; scale it down",
+        "texture `{}` is {width}×{height} pixels, more than the {max_pixels} pixels Onyx decodes; scale it down",
         path.display()
     )]
     TooLarge {
@@ -36,7 +46,20 @@ pub enum TextureLoadError {
         width: u32,
         /// Image height in pixels.
         height: u32,
-        /// Largest side the adapter supports.
-        max: u32,
+        /// Largest number of pixels decoded.
+        max_pixels: u64,
     },
+}
+
+impl TextureLoadError {
+    /// The image file.
+    #[must_use]
+    pub fn path(&self) -> &std::path::Path {
+        match self {
+            TextureLoadError::Read { path, .. }
+            | TextureLoadError::Decode { path, .. }
+            | TextureLoadError::Unsupported { path, .. }
+            | TextureLoadError::TooLarge { path, .. } => path,
+        }
+    }
 }

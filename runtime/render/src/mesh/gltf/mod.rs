@@ -1,0 +1,16 @@
+//! glTF 2.0 (`.gltf` with external or embedded buffers, `.glb`) through the `gltf` crate.
+//!
+//! - `gltf_loader`: the file into a [`crate::ModelSource`]: the default scene's nodes
+//!   walked, one part per primitive at its node's world transform (the entry point).
+//! - `gltf_buffers`: buffer and image bytes (GLB chunk, `data:` URIs, files beside the
+//!   model — regular files only).
+//! - `gltf_primitive`: a primitive's accessors (sparse ones included) into a [`crate::MeshData`].
+//! - `gltf_material`: a material into a [`crate::ModelMaterial`] (metallic-roughness,
+//!   samplers, `KHR_texture_transform`, `KHR_materials_emissive_strength`).
+
+mod gltf_buffers;
+mod gltf_loader;
+mod gltf_material;
+mod gltf_primitive;
+
+pub(crate) use gltf_loader::load_gltf_source;

@@ -1,0 +1,128 @@
+//! [`ModelSource`] and [`PartSource`]: a model file read and decoded on the CPU, ready to
+//! upload. Reading needs no GPU, so it can run on any thread.
+
+use std::collections::HashMap;
+use std::path::{Path, PathBuf};
+
+use glam::Mat4;
+
+use super::import_settings::ImportSettings;
+use super::mesh_data::MeshData;
+use super::model_load_error::ModelLoadError;
+use crate::asset_io::AssetWarning;
+use crate::model_material::{ImageSource, ModelMaterial};
+use crate::texture::{decode_texture, decode_texture_bytes, TextureSource};
+
+/// One mesh of a model with its material and its place in the model.
+#[derive(Clone, Debug)]
+pub struct PartSource {
+    /// Object, group or node name from the file.
+    pub name: String,
+    /// The triangles.
+    pub mesh: MeshData,
+    /// The material the file gives it.
+    pub material: ModelMaterial,
+    /// The part's material could not be found because its library failed to load: it is
+    /// drawn as the missing-texture placeholder.
+    pub material_missing: bool,
+    /// Part space → model space (a glTF node's world transform; identity for OBJ).
+    pub transform: Mat4,
+}
+
+/// A model file read on the CPU: parts, the decoded base-colour images they use, and every
+/// problem met. [`crate::Renderer::upload_model`] turns it into a drawable [`crate::Model`].
+#[derive(Debug)]
+pub struct ModelSource {
+    /// The file.
+    pub path: PathBuf,
+    /// Parts, in file order.
+    pub parts: Vec<PartSource>,
+    /// Decoded images by source, each decoded once however many parts use it; `None` for
+    /// one that failed (its error is in `problems`).
+    pub images: HashMap<ImageSource, Option<TextureSource>>,
+    /// Problems that leave something to draw (missing MTL, failed texture), each once.
+    pub problems: Vec<ModelLoadError>,
+    /// Oddities worked around, each kind once.
+    pub warnings: Vec<AssetWarning>,
+    /// Encoded bytes of images stored inside the model file, until decoded.
+    pub(crate) encoded: HashMap<ImageSource, Vec<u8>>,
+}
+
+impl ModelSource {
+    pub(crate) fn new(
+        path: PathBuf,
+        parts: Vec<PartSource>,
+        problems: Vec<ModelLoadError>,
+        warnings: Vec<AssetWarning>,
+    ) -> Self {
+        Self {
+            path,
+            parts,
+            images: HashMap::new(),
+            problems,
+            warnings,
+            encoded: HashMap::new(),
+        }
+    }
+
+    /// Reads a model file (OBJ; glTF and GLB by extension) with its materials, and decodes
+    /// the base-colour images it uses, downscaled to at most `max_texture_side` pixels.
+    ///
+    /// # Errors
+    /// [`ModelLoadError`] naming the file when nothing can be drawn from it.
+    pub fn load(
+        path: &Path,
+        settings: &ImportSettings,
+        max_texture_side: u32,
+    ) -> Result<Self, ModelLoadError> {
+        let mut source = super::load_model_source(path, settings)?;
+        source.decode_images(max_texture_side);
+        for warning in &source.warnings {
+            tracing::warn!("{warning}");
+        }
+        Ok(source)
+    }
+
+    /// Decodes every base-colour image not decoded yet; a failure becomes one problem naming
+    /// the first material that uses the image.
+    pub(crate) fn decode_images(&mut self, max_side: u32) {
+        for part in &self.parts {
+            let Some(slot) = &part.material.base_color_texture else {
+                continue;
+            };
+            if self.images.contains_key(&slot.image) {
+                continue;
+            }
+            let result = match self.encoded.remove(&slot.image) {
+                Some(bytes) => {
+                    let name = std::path::PathBuf::from(slot.image.to_string());
+                    decode_texture_bytes(&bytes, &name, max_side)
+                }
+                None => decode_texture(&slot.image, max_side),
+            };
+            let decoded = match result {
+                Ok(texture) => {
+                    if let Some(warning) = &texture.warning {
+                        self.warnings.push(warning.clone());
+                    }
+                    Some(texture)
+                }
+                Err(error) => {
+                    self.problems.push(ModelLoadError::Texture {
+                        obj: self.path.clone(),
+                        material: part.material.name.clone(),
+                        source: Box::new(error),
+                    });
+                    None
+                }
+            };
+            self.images.insert(slot.image.clone(), decoded);
+        }
+    }
+
+    /// Number of triangles of all parts.
+    #[must_use]
+    pub fn triangle_count(&self) -> usize {
+        self.parts.iter().map(|p| p.mesh.triangle_count()).sum()
+    }
+}
