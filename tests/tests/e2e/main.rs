@@ -6,6 +6,7 @@ mod ctx_api;
 mod dev_loop;
 mod editor;
 mod faults;
+mod fuzz;
 mod gui;
 mod hardening;
 mod hierarchy;
