@@ -32,6 +32,7 @@ pub trait HostObject {
     fn time(&self) -> Time;
     fn input(&self) -> InputState;
     fn request_quit(&mut self);
+    fn prevent_close(&mut self);
     fn set_paused(&mut self, paused: bool);
     fn set_time_scale(&mut self, scale: f32) -> RResult<(), CtxErrorFfi>;
     fn step_once(&mut self);
@@ -174,6 +175,10 @@ impl<H: HostServices + ?Sized> HostObject for HostBridge<'_, H> {
 
     fn request_quit(&mut self) {
         guard("request_quit", || (), || self.0.request_quit())
+    }
+
+    fn prevent_close(&mut self) {
+        guard("prevent_close", || (), || self.0.prevent_close())
     }
 
     fn set_paused(&mut self, paused: bool) {

@@ -405,9 +405,15 @@ impl Host {
             }
         }
         for event in &events {
+            let closing = matches!(event, Event::Window(WindowEvent::CloseRequested));
+            if closing {
+                self.state.io.close_requested = true;
+                self.state.io.close_kept_by = None;
+            }
             for slot in &mut self.plugins {
                 slot.call(&mut self.state, Stage::Event, |p, cx| p.on_event(cx, event));
             }
+            self.state.io.close_requested = false;
             match event {
                 Event::Window(WindowEvent::Resized { width, height }) => {
                     let (w, h) = (*width, *height);
@@ -417,7 +423,12 @@ impl Host {
                         });
                     }
                 }
-                Event::Window(WindowEvent::CloseRequested) => self.state.io.quit_requested = true,
+                // A plugin with unsaved work may keep the window open to ask first.
+                Event::Window(WindowEvent::CloseRequested) => {
+                    if self.state.io.close_kept_by.is_none() {
+                        self.state.io.quit_requested = true;
+                    }
+                }
                 _ => {}
             }
         }
