@@ -424,10 +424,10 @@ impl Host {
                     }
                 }
                 // A plugin with unsaved work may keep the window open to ask first.
-                Event::Window(WindowEvent::CloseRequested) => {
-                    if self.state.io.close_kept_by.is_none() {
-                        self.state.io.quit_requested = true;
-                    }
+                Event::Window(WindowEvent::CloseRequested)
+                    if self.state.io.close_kept_by.is_none() =>
+                {
+                    self.state.io.quit_requested = true;
                 }
                 _ => {}
             }
