@@ -1,10 +1,11 @@
 //! The Viewport panel: the host-rendered scene, the editor's fly camera, click-to-select,
-//! view switches and the translate / rotate / scale gizmo.
+//! view switches, the translate / rotate / scale gizmo (moving the whole selection), the
+//! selection outline and the frame shown while playing.
 
 use onyx_plugin_api::glam::{EulerRot, Mat4, Quat, Vec2, Vec3, Vec4};
-use onyx_plugin_api::tools::{ComponentKey, RenderOverrides};
+use onyx_plugin_api::tools::{Bounds, ComponentKey, ComponentValue, RenderOverrides};
 use onyx_plugin_api::{
-    egui, gui, BuiltinId, Camera, Ctx, Entity, MeshRenderer, Name, PlayMode, ShadingMode, Transform,
+    egui, gui, BuiltinId, Camera, Ctx, Entity, Name, PlayMode, ShadingMode, Transform,
 };
 use serde::{Deserialize, Serialize};
 
@@ -29,6 +30,14 @@ pub const SNAP_DEGREES: f32 = 15.0;
 pub const SNAP_SCALE: f32 = 0.1;
 /// How near (points) to an axis handle a press must be to grab it.
 const GRAB_DISTANCE: f32 = 10.0;
+/// The outline of the primary selection.
+const OUTLINE: egui::Color32 = egui::Color32::from_rgb(255, 170, 0);
+/// The outline of the rest of the selection.
+const OUTLINE_OTHERS: egui::Color32 = egui::Color32::from_rgb(255, 220, 140);
+/// The frame around the viewport while playing or paused.
+const PLAYING_FRAME: egui::Color32 = egui::Color32::from_rgb(255, 140, 0);
+/// Its width, points.
+const PLAYING_FRAME_WIDTH: f32 = 3.0;
 
 /// The editor camera's pose.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
@@ -89,16 +98,28 @@ pub enum GizmoSpace {
     Local,
 }
 
+/// An entity a gizmo drag moves: a selected entity with no selected ancestor.
+#[derive(Clone, Debug)]
+struct Mover {
+    entity: Entity,
+    /// Its world pose when the drag started.
+    start: Transform,
+    /// Its local transform (its component) when the drag started, for undo.
+    old: Option<ComponentValue>,
+}
+
 #[derive(Clone, Debug)]
 struct GizmoDrag {
+    /// The primary selection, whose gizmo is dragged.
     entity: Entity,
     axis: usize,
-    /// The entity's local transform (its component) when the drag started, for undo.
-    old: Option<onyx_plugin_api::tools::ComponentValue>,
+    /// The primary's world pose when the drag started.
     start: Transform,
     moved: Vec2,
     screen_axis: Vec2,
     world_length: f32,
+    /// Everything the drag moves (the whole selection, each subtree once).
+    movers: Vec<Mover>,
 }
 
 /// The viewport's state.
@@ -140,16 +161,19 @@ impl Default for ViewportState {
 }
 
 impl ViewportState {
-    /// Finds (by name) or makes the editor camera entity, makes it the view and moves it to
-    /// the fly camera's pose.
+    /// Finds (by name, among cameras) or makes the editor camera entity, makes it the view
+    /// and moves it to the fly camera's pose. The entity is checked to still be a camera
+    /// each frame: a handle kept across a new or opened scene must never steer anything else.
     pub fn ensure_camera(&mut self, ctx: &mut Ctx) {
-        let alive = self.entity.is_some_and(|e| ctx.contains(e));
+        let alive = self.entity.is_some_and(|e| ctx.get::<Camera>(e).is_ok());
         if !alive {
             let list = ctx.entity_list();
-            let found = list
+            let named: Vec<Entity> = list
                 .iter()
-                .find(|(_, name)| *name == EDITOR_CAMERA)
-                .map(|(e, _)| e);
+                .filter(|(_, name)| *name == EDITOR_CAMERA)
+                .map(|(e, _)| e)
+                .collect();
+            let found = named.into_iter().find(|e| ctx.get::<Camera>(*e).is_ok());
             let entity = match found {
                 Some(e) => Some(e),
                 None => ctx
@@ -186,6 +210,14 @@ impl ViewportState {
         self.entity
     }
 
+    /// Forgets the camera entity (the world was replaced): the next frame finds or makes it
+    /// again.
+    pub fn forget_camera(&mut self) {
+        self.entity = None;
+        self.written = None;
+        self.drag = None;
+    }
+
     fn overrides(&self) -> RenderOverrides {
         let overrides = RenderOverrides::default()
             .with_grid(self.grid)
@@ -203,17 +235,124 @@ impl ViewportState {
     }
 }
 
+/// The accessible name of the viewport image.
+pub const VIEWPORT_LABEL: &str = "Scene viewport";
+
 /// Draws the panel.
 pub fn show(ui: &mut egui::Ui, ctx: &mut Ctx, state: &mut EditorState) {
     toolbar(ui, &mut state.viewport);
     let response = gui::viewport(ui);
+    response
+        .widget_info(|| egui::WidgetInfo::labeled(egui::WidgetType::Image, true, VIEWPORT_LABEL));
     let rect = response.rect;
     fly(ui, ctx, state, &response);
     let view_proj = view_projection(&state.viewport.camera, rect);
+    outline_selection(ui, ctx, state, &response, view_proj);
     let gizmo_took = gizmo(ui, ctx, state, &response, view_proj);
     if response.clicked() && !gizmo_took {
         pick(ui, ctx, state, &response);
     }
+    play_frame(ui, ctx, rect);
+}
+
+/// While playing or paused: a frame around the view and a line saying Stop puts the scene
+/// back, so a change made now is not mistaken for an edit.
+fn play_frame(ui: &mut egui::Ui, ctx: &mut Ctx, rect: egui::Rect) {
+    let mode = ctx.play_mode();
+    let what = match mode {
+        PlayMode::Edit => return,
+        PlayMode::Playing => "Playing: Stop puts the scene back",
+        PlayMode::Paused => "Paused: Stop puts the scene back",
+    };
+    ui.painter_at(rect).rect_stroke(
+        rect,
+        0.0,
+        egui::Stroke::new(PLAYING_FRAME_WIDTH, PLAYING_FRAME),
+        egui::StrokeKind::Inside,
+    );
+    let at = egui::Rect::from_min_size(
+        rect.min + egui::vec2(PLAYING_FRAME_WIDTH + 6.0, PLAYING_FRAME_WIDTH + 4.0),
+        egui::vec2(rect.width() - 2.0 * (PLAYING_FRAME_WIDTH + 6.0), 20.0),
+    );
+    let text = egui::RichText::new(what)
+        .color(PLAYING_FRAME)
+        .background_color(egui::Color32::from_black_alpha(160));
+    ui.put(at, egui::Label::new(text).selectable(false));
+}
+
+/// Outlines each selected entity: the edges of the box around what it shows, at its world
+/// pose (the primary brighter). Each outline is named for AccessKit ("Selection outline:
+/// NAME"), over the screen rectangle it covers.
+fn outline_selection(
+    ui: &mut egui::Ui,
+    ctx: &mut Ctx,
+    state: &EditorState,
+    response: &egui::Response,
+    view_proj: Mat4,
+) {
+    let rect = response.rect;
+    let painter = ui.painter_at(rect);
+    let primary = state.primary();
+    for &entity in &state.selection {
+        if Some(entity) == state.viewport.entity {
+            continue;
+        }
+        let (Some(bounds), Ok(pose)) = (ctx.local_bounds(entity), ctx.world_pose(entity)) else {
+            continue;
+        };
+        let corners = outline_corners(&bounds, pose.0.into(), view_proj, rect);
+        let colour = if Some(entity) == primary {
+            OUTLINE
+        } else {
+            OUTLINE_OTHERS
+        };
+        let stroke = egui::Stroke::new(2.0, colour);
+        let mut covered: Option<egui::Rect> = None;
+        for (a, b) in Bounds::EDGES {
+            if let (Some(a), Some(b)) = (corners[a], corners[b]) {
+                painter.line_segment([a, b], stroke);
+                let edge = egui::Rect::from_two_pos(a, b);
+                covered = Some(covered.map_or(edge, |c| c.union(edge)));
+            }
+        }
+        let Some(covered) = covered
+            .map(|c| c.intersect(rect))
+            .filter(|c| c.is_positive())
+        else {
+            continue;
+        };
+        let name = state
+            .entities
+            .entities()
+            .iter()
+            .position(|e| *e == entity)
+            .map(|row| state.row_label(row).into_owned())
+            .unwrap_or_default();
+        let node = ui.interact(
+            covered,
+            response.id.with(("selection-outline", entity)),
+            egui::Sense::hover(),
+        );
+        node.widget_info(|| {
+            egui::WidgetInfo::labeled(
+                egui::WidgetType::Other,
+                true,
+                format!("Selection outline: {name}"),
+            )
+        });
+    }
+}
+
+/// The screen positions of the corners of `bounds` placed at `pose` (`None` behind the eye).
+fn outline_corners(
+    bounds: &Bounds,
+    pose: Mat4,
+    view_proj: Mat4,
+    rect: egui::Rect,
+) -> [Option<egui::Pos2>; 8] {
+    bounds
+        .corners()
+        .map(|c| to_screen(view_proj, rect, pose.transform_point3(c)))
 }
 
 fn toolbar(ui: &mut egui::Ui, view: &mut ViewportState) {
@@ -357,11 +496,11 @@ fn pick(ui: &mut egui::Ui, ctx: &mut Ctx, state: &mut EditorState, response: &eg
         .screen_ray(Vec2::new(local.x, local.y), Vec2::new(size.x, size.y))
         .map(|r| (r.origin, r.direction))
         .unwrap_or_else(|| own_ray(&state.viewport.camera, response.rect, pointer));
-    // Colliders first (exact), else the bounding spheres of visible meshes.
+    // What each entity shows — meshes and colliders, at world poses — nearest first.
     let hit = ctx
-        .raycast(ray.0, ray.1, 1000.0)
+        .pick(ray.0, ray.1, 1000.0)
         .map(|h| h.entity)
-        .or_else(|| pick_mesh(ctx, state, ray.0, ray.1));
+        .filter(|e| Some(*e) != state.viewport.entity);
     let multi = ui.input(|i| i.modifiers.command || i.modifiers.shift);
     match hit {
         Some(hit) if multi => state.toggle_selected(hit),
@@ -381,44 +520,6 @@ fn own_ray(cam: &FlyCamera, rect: egui::Rect, pointer: egui::Pos2) -> (Vec3, Vec
     (near, (far - near).normalize_or(Vec3::NEG_Z))
 }
 
-/// The nearest entity with a visible mesh whose bounding sphere (at its world pose) the ray
-/// meets.
-fn pick_mesh(ctx: &mut Ctx, state: &EditorState, origin: Vec3, dir: Vec3) -> Option<Entity> {
-    let skip = state.viewport.entity;
-    let list = &state.entities;
-    let mut candidates: Vec<(Entity, Transform)> = ctx
-        .transforms()
-        .iter()
-        .map(|t| (t.entity, t.transform))
-        .filter(|(e, _)| Some(*e) != skip)
-        .collect();
-    // Children are where their parents put them.
-    for (entity, t) in &mut candidates {
-        let row = list.entities().iter().position(|e| e == entity);
-        if row.and_then(|r| list.parent(r)).is_some() {
-            if let Ok(pose) = ctx.world_pose(*entity) {
-                *t = pose.to_transform();
-            }
-        }
-    }
-    let mut best: Option<(f32, Entity)> = None;
-    for (entity, t) in candidates {
-        let radius = 0.75 * t.scale.abs().max_element();
-        let to = t.translation - origin;
-        let along = to.dot(dir);
-        if along <= 0.0 || (to - dir * along).length_squared() > radius * radius {
-            continue;
-        }
-        if best.is_some_and(|(d, _)| d <= along) {
-            continue;
-        }
-        if ctx.get::<MeshRenderer>(entity).is_ok_and(|m| m.visible) {
-            best = Some((along, entity));
-        }
-    }
-    best.map(|(_, e)| e)
-}
-
 /// The gizmo handles' accessible names, by axis.
 pub const HANDLE_LABELS: [&str; 3] = ["Gizmo X", "Gizmo Y", "Gizmo Z"];
 
@@ -428,7 +529,8 @@ const AXES: [(Vec3, egui::Color32); 3] = [
     (Vec3::Z, egui::Color32::from_rgb(70, 120, 240)),
 ];
 
-/// Draws the gizmo of the primary selection and drags it; whether the pointer used it.
+/// Draws the gizmo of the primary selection and drags the whole selection with it (each
+/// selected subtree once, as one undo step); whether the pointer used it.
 fn gizmo(
     ui: &mut egui::Ui,
     ctx: &mut Ctx,
@@ -507,14 +609,26 @@ fn gizmo(
                 .min_by(|a, b| a.2.total_cmp(&b.2));
             if let Some((axis, end, _)) = nearest {
                 let screen = end - center;
+                let mut movers = Vec::new();
+                for root in state.selected_roots() {
+                    let Ok(start) = ctx.world_pose(root).map(|pose| pose.to_transform()) else {
+                        continue;
+                    };
+                    let old = crate::history::component(ctx, root, &TRANSFORM);
+                    movers.push(Mover {
+                        entity: root,
+                        start,
+                        old,
+                    });
+                }
                 state.viewport.drag = Some(GizmoDrag {
                     entity,
                     axis,
-                    old: crate::history::component(ctx, entity, &TRANSFORM),
                     start: transform,
                     moved: Vec2::ZERO,
                     screen_axis: Vec2::new(screen.x, screen.y),
                     world_length,
+                    movers,
                 });
                 took = true;
             }
@@ -536,19 +650,30 @@ fn gizmo(
             snap,
         );
         if t.is_finite() {
-            let _ = ctx.set_world_pose(entity, t);
+            for mover in &drag.movers {
+                let moved = carried(&drag.start, &t, &mover.start, mode);
+                if moved.is_finite() {
+                    let _ = ctx.set_world_pose(mover.entity, moved);
+                }
+            }
         }
         if response.drag_stopped() || !ui.input(|i| i.pointer.primary_down()) {
             let finished = state.viewport.drag.take();
             if let Some(drag) = finished {
-                let new = crate::history::component(ctx, entity, &TRANSFORM);
-                if new != drag.old && ctx.play_mode() == PlayMode::Edit {
-                    state.history.record(Command::SetComponent {
-                        entity,
-                        key: TRANSFORM,
-                        old: drag.old,
-                        new,
-                    });
+                let mut edits = Vec::new();
+                for mover in drag.movers {
+                    let new = crate::history::component(ctx, mover.entity, &TRANSFORM);
+                    if new != mover.old {
+                        edits.push(Command::SetComponent {
+                            entity: mover.entity,
+                            key: TRANSFORM,
+                            old: mover.old,
+                            new,
+                        });
+                    }
+                }
+                if let Some(command) = Command::group(edits) {
+                    state.record(ctx, command);
                 }
             }
         }
@@ -587,6 +712,26 @@ fn dragged(drag: &GizmoDrag, mode: GizmoMode, axis: Vec3, snap: bool) -> Transfo
             let mut s = t.scale.to_array();
             s[drag.axis] = snapped(s[drag.axis] * (1.0 + along), SNAP_SCALE).max(0.01);
             t.scale = Vec3::from_array(s);
+        }
+    }
+    t
+}
+
+/// Where the gizmo drag that took the primary from `from` to `to` (world poses) takes
+/// another selected entity that was at `other`: moved by the same offset, turned about the
+/// primary's origin by the same turn, or scaled along its own axes by the same factors.
+fn carried(from: &Transform, to: &Transform, other: &Transform, mode: GizmoMode) -> Transform {
+    let mut t = *other;
+    match mode {
+        GizmoMode::Translate => t.translation += to.translation - from.translation,
+        GizmoMode::Rotate => {
+            let turn = to.rotation * from.rotation.inverse();
+            t.translation = from.translation + turn * (other.translation - from.translation);
+            t.rotation = (turn * other.rotation).normalize();
+        }
+        GizmoMode::Scale => {
+            let factor = to.scale / from.scale.max(Vec3::splat(1e-6));
+            t.scale = (other.scale * factor).max(Vec3::splat(0.01));
         }
     }
     t

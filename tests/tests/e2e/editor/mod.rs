@@ -734,4 +734,6 @@ fn the_viewport_camera_flies_zooms_and_frames_the_selection() {
     );
 }
 
+mod files;
 mod scene_graph;
+mod viewport;
