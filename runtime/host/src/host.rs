@@ -36,7 +36,7 @@ pub struct Host {
     pub(crate) plugins: Vec<PluginSlot>,
     plugin_settings: Vec<(String, String, String)>,
     search_path: PluginSearchPath,
-    initialized: bool,
+    pub(crate) initialized: bool,
     shut_down: bool,
     pub(crate) watcher: Option<crate::plugins::LibraryWatcher>,
     pub(crate) gui: crate::gui::GuiSystem,
