@@ -23,7 +23,8 @@ fn scaffold_target_lock() -> MutexGuard<'static, ()> {
     SCAFFOLD_TARGET.lock().unwrap_or_else(|e| e.into_inner())
 }
 
-/// Where scaffolded crates are built: the target directory of this build (`target/`).
+/// Where scaffolded crates are built: the target directory of this build (`target/`). Their
+/// names start `fixture-`, so `onyx plugins` does not list the libraries they leave there.
 fn scaffold_target_dir() -> PathBuf {
     target_dir()
         .parent()
@@ -70,11 +71,11 @@ fn new_plugin(name: &str, parent: &Path) -> PathBuf {
 #[test]
 fn new_plugin_scaffolds_a_crate_that_builds_and_passes_its_tests() {
     let parent = tempfile::tempdir().unwrap();
-    let dir = new_plugin("scaffold-check", parent.path());
+    let dir = new_plugin("fixture-scaffold-check", parent.path());
 
     let manifest = std::fs::read_to_string(dir.join("Cargo.toml")).unwrap();
     for needle in [
-        "name = \"scaffold-check\"",
+        "name = \"fixture-scaffold-check\"",
         "crate-type = [\"cdylib\", \"rlib\"]",
         "[workspace]",
         "onyx-plugin-api = { path = ",
@@ -303,7 +304,7 @@ fn edit(file: &Path, from: &str, to: &str) {
 #[test]
 fn dev_rebuilds_and_hot_reloads_a_scaffolded_plugin_on_save() {
     let parent = tempfile::tempdir().unwrap();
-    let dir = new_plugin("dev-loop-probe", parent.path());
+    let dir = new_plugin("fixture-dev-loop-probe", parent.path());
     let lib_rs = dir.join("src/lib.rs");
     let _turn = scaffold_target_lock();
 
@@ -319,7 +320,7 @@ fn dev_rebuilds_and_hot_reloads_a_scaffolded_plugin_on_save() {
     assert!(
         dev.lines()[..i]
             .iter()
-            .any(|l| l.contains("loaded plugin library") && l.contains("dev_loop_probe")),
+            .any(|l| l.contains("loaded plugin library") && l.contains("fixture_dev_loop_probe")),
         "{}",
         dev.stderr_tail()
     );
