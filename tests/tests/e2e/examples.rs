@@ -264,3 +264,60 @@ fn hot_reload_keeps_the_angle_and_turns_across_a_reload() {
     );
     assert_running(&host);
 }
+
+/// `scripts/example.sh` lists and runs the examples from a table of its own: every example
+/// crate's plugin must be in it, and every plugin it names must be an example crate's.
+#[test]
+fn the_example_script_lists_every_example_and_runs_only_those() {
+    let repo = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("..");
+    let crates: Vec<String> = std::fs::read_dir(repo.join("examples"))
+        .unwrap()
+        .flatten()
+        .filter(|e| e.path().join("Cargo.toml").is_file())
+        .map(|e| e.file_name().to_string_lossy().replace('-', "_"))
+        .collect();
+    let script = std::fs::read_to_string(repo.join("scripts/example.sh")).unwrap();
+    let rows: Vec<(&str, Vec<&str>)> = script
+        .lines()
+        .filter_map(|l| l.trim().strip_prefix('"')?.strip_suffix('"'))
+        .filter_map(|row| {
+            let mut fields = row.split('|');
+            let name = fields.next()?;
+            let plugins = fields.next()?.split_whitespace().collect();
+            Some((name, plugins))
+        })
+        .collect();
+    for lib in &crates {
+        assert!(
+            rows.iter()
+                .any(|(_, plugins)| plugins.contains(&lib.as_str())),
+            "examples/{lib} is not in scripts/example.sh"
+        );
+    }
+    for (name, plugins) in &rows {
+        for plugin in plugins {
+            assert!(
+                crates.iter().any(|c| c == plugin),
+                "scripts/example.sh runs `{plugin}` ({name}), which is no example crate"
+            );
+        }
+    }
+    let out = std::process::Command::new("bash")
+        .arg(repo.join("scripts/example.sh"))
+        .output()
+        .expect("bash runs");
+    let listed = String::from_utf8_lossy(&out.stdout);
+    assert!(out.status.success(), "{listed}");
+    for (name, _) in &rows {
+        assert!(
+            listed.contains(&format!("  {name} ")),
+            "{name} listed: {listed}"
+        );
+    }
+    let unknown = std::process::Command::new("bash")
+        .arg(repo.join("scripts/example.sh"))
+        .arg("no-such-example")
+        .output()
+        .expect("bash runs");
+    assert_eq!(unknown.status.code(), Some(2));
+}
