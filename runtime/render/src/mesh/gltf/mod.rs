@@ -2,6 +2,8 @@
 //!
 //! - `gltf_loader`: the file into a [`crate::ModelSource`]: the default scene's nodes
 //!   walked, one part per primitive at its node's world transform (the entry point).
+//! - `gltf_mesh_loader`: one mesh of the file (`file.glb#mesh/N`) into a
+//!   [`crate::ModelSource`], in the mesh's own space (a scene entity draws each mesh).
 //! - `gltf_buffers`: buffer and image bytes (GLB chunk, `data:` URIs, files beside the
 //!   model — regular files only).
 //! - `gltf_primitive`: a primitive's accessors (sparse ones included) into a [`crate::MeshData`].
@@ -11,6 +13,8 @@
 mod gltf_buffers;
 mod gltf_loader;
 mod gltf_material;
+mod gltf_mesh_loader;
 mod gltf_primitive;
 
 pub(crate) use gltf_loader::load_gltf_source;
+pub(crate) use gltf_mesh_loader::load_gltf_mesh_source;
