@@ -4,6 +4,7 @@ use std::collections::HashMap;
 use std::path::{Path, PathBuf};
 
 use onyx_plugin_api::{MeshId, TextureId};
+use onyx_render::SubAsset;
 
 /// Ids for model and texture files, one per path, valid for the life of the host. It holds
 /// no GPU data: a host without a renderer still hands out ids (so plugins and scenes behave
@@ -37,8 +38,16 @@ impl AssetRegistry {
     /// read it (from the asset root: the working directory by default), then beside each
     /// folder above that file (a scene in `assets/scenes/` naming `assets/models/x.obj`), so
     /// the same scene shows the same models from any working directory. Found nowhere, it is
-    /// kept as written (the load error then names it).
+    /// kept as written (the load error then names it). A piece of a model file
+    /// (`city.glb#mesh/3`, [`SubAsset`]) is found by its file and keeps its piece.
     pub fn find_beside(&self, folder: &Path, written: &Path) -> PathBuf {
+        if let (file, Some(sub)) = SubAsset::split(written) {
+            return sub.path_in(&self.find_file_beside(folder, &file));
+        }
+        self.find_file_beside(folder, written)
+    }
+
+    fn find_file_beside(&self, folder: &Path, written: &Path) -> PathBuf {
         if written.is_absolute() || written.as_os_str().is_empty() {
             return written.to_path_buf();
         }
@@ -139,6 +148,12 @@ mod tests {
         assert_eq!(
             registry.find_beside(&scenes, Path::new("gone.obj")),
             Path::new("gone.obj")
+        );
+        // One mesh of a glTF file: found by its file, the piece kept.
+        std::fs::write(scenes.join("city.glb"), "glTF").unwrap_or_else(|e| panic!("{e}"));
+        assert_eq!(
+            registry.find_beside(&scenes, Path::new("city.glb#mesh/3")),
+            PathBuf::from(format!("{}#mesh/3", scenes.join("city.glb").display()))
         );
         let _ = std::fs::remove_dir_all(&root);
     }

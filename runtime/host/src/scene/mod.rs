@@ -6,13 +6,16 @@
 //! - `scene_spawn.rs`: spawn into a world, every value checked first.
 //! - `scene_save.rs`: capture a world, atomic write.
 //! - `scene_error.rs`: [`SceneError`].
+//! - `gltf_import/`: a glTF file read as a scene (its node tree under one root entity).
 
+pub mod gltf_import;
 mod scene_error;
 mod scene_file;
 mod scene_read;
 mod scene_save;
 mod scene_spawn;
 
+pub use gltf_import::{import_gltf_scene, is_gltf_scene, GltfImportError, GltfScene};
 pub use scene_error::SceneError;
 pub use scene_file::{
     SceneComponent, SceneEntity, SceneFile, OLDEST_SCENE_FORMAT_VERSION, SCENE_FORMAT_VERSION,

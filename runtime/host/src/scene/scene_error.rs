@@ -66,6 +66,9 @@ pub enum SceneError {
         /// What is wrong.
         message: String,
     },
+    /// A glTF file opened as a scene could not be imported.
+    #[error(transparent)]
+    Gltf(#[from] super::GltfImportError),
     /// The world could not be serialized.
     #[error("could not serialize the scene: {message}")]
     Serialize {
@@ -90,6 +93,7 @@ impl SceneError {
             | SceneError::UnsupportedVersion { path, .. }
             | SceneError::InvalidEntity { path, .. }
             | SceneError::InvalidPhysics { path, .. } => Some(path),
+            SceneError::Gltf(error) => Some(error.path()),
             SceneError::Serialize { .. } => None,
         }
     }

@@ -92,7 +92,9 @@ impl ToolServices for CallContext<'_> {
                     self.state.clock.set_fixed_hz(physics.fixed_hz());
                     self.state.physics.set_scene_physics(physics);
                 }
-                self.state.tools.scene_path = Some(path.to_path_buf());
+                // A glTF file opened as a scene is not where the scene is saved to.
+                self.state.tools.scene_path =
+                    (!scene::is_gltf_scene(path)).then(|| path.to_path_buf());
                 Ok(())
             }
             Err(error) => {
