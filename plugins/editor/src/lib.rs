@@ -111,6 +111,7 @@ impl Plugin for Editor {
                         FilePurpose::Open => menu::open_scene(ctx, state, &path),
                         FilePurpose::SaveAs => menu::save_scene(ctx, state, &path),
                         FilePurpose::ImportObj => create::import_obj(ctx, state, &path),
+                        FilePurpose::ImportGltf => create::import_gltf(ctx, state, &path),
                         FilePurpose::LoadPlugin => ctx.load_plugin(&path),
                     }
                 }

@@ -306,6 +306,8 @@ impl Host {
             self.state.clock.tick();
         }
         let dt = self.state.clock.time().delta;
+        // Animated poses before plugins read them.
+        self.state.animation.advance(&mut self.state.world, dt);
         for slot in &mut self.plugins {
             let flow = slot.call(&mut self.state, Stage::Update, |p, cx| p.on_update(cx, dt));
             if flow == Some(Flow::Quit) {

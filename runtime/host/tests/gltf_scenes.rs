@@ -149,7 +149,10 @@ fn lamp_lights_are_point_lights_at_their_nodes_and_the_unknown_extension_warned_
         panic!("{light:?}")
     };
     assert_eq!(color, [1.0, 0.631_875, 0.239_099_76]);
-    assert_eq!(intensity, 15.0);
+    assert_eq!(
+        intensity,
+        15.0 * onyx_runtime::scene::gltf_import::ONYX_PER_CANDELA
+    );
     // No range in the file: where 15 cd falls to 0.01 lux.
     assert!((range - (15.0f32 / 0.01).sqrt()).abs() < 1e-3, "{range}");
     assert!(at

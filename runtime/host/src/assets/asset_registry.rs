@@ -3,7 +3,7 @@
 use std::collections::HashMap;
 use std::path::{Path, PathBuf};
 
-use onyx_plugin_api::{MeshId, TextureId};
+use onyx_plugin_api::{AnimationId, MeshId, TextureId};
 use onyx_render::SubAsset;
 
 /// Ids for model and texture files, one per path, valid for the life of the host. It holds
@@ -16,6 +16,8 @@ pub struct AssetRegistry {
     mesh_ids: HashMap<PathBuf, MeshId>,
     textures: Vec<PathBuf>,
     texture_ids: HashMap<PathBuf, TextureId>,
+    animations: Vec<PathBuf>,
+    animation_ids: HashMap<PathBuf, AnimationId>,
 }
 
 impl AssetRegistry {
@@ -86,6 +88,34 @@ impl AssetRegistry {
         self.textures.push(path.to_path_buf());
         self.texture_ids.insert(path.to_path_buf(), id);
         id
+    }
+
+    /// The id of the animation at `path` (`file.glb#animation/N`, or `file.glb` for all of
+    /// the file's animations), registering it if new.
+    pub fn animation(&mut self, path: &Path) -> AnimationId {
+        if let Some(id) = self.animation_ids.get(path) {
+            return *id;
+        }
+        let id = AnimationId(1 + self.animations.len() as u32);
+        self.animations.push(path.to_path_buf());
+        self.animation_ids.insert(path.to_path_buf(), id);
+        id
+    }
+
+    /// The id of the animation at `path`, if it was registered.
+    pub fn animation_id(&self, path: &Path) -> Option<AnimationId> {
+        self.animation_ids.get(path).copied()
+    }
+
+    /// The file (and piece) of an animation id.
+    pub fn animation_path(&self, id: AnimationId) -> Option<&Path> {
+        let index = id.0.checked_sub(1)?;
+        self.animations.get(index as usize).map(PathBuf::as_path)
+    }
+
+    /// Whether `id` is none or a registered animation.
+    pub fn knows_animation(&self, id: AnimationId) -> bool {
+        id == AnimationId::NONE || self.animation_path(id).is_some()
     }
 
     /// The id of the model at `path`, if it was registered.

@@ -22,4 +22,4 @@ pub use scene_file::{
 };
 pub use scene_read::{parse_scene, read_scene};
 pub use scene_save::{scene_from_world, write_scene};
-pub use scene_spawn::spawn_scene;
+pub use scene_spawn::{spawn_scene, spawn_scene_entities};

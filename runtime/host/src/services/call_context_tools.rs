@@ -200,4 +200,38 @@ impl ToolServices for CallContext<'_> {
         let e = state.world.entity(entity)?;
         crate::tools::local_bounds(&state.world, &mut state.tools.mesh_bounds, e)
     }
+
+    fn import_gltf(&mut self, path: &str) -> Result<Entity, CtxError> {
+        let path = Path::new(path);
+        let world = &mut self.state.world;
+        let spawned = scene::import_gltf_scene(path, false)
+            .map_err(SceneError::from)
+            .and_then(|imported| {
+                for warning in &imported.warnings {
+                    tracing::warn!("`{}`: {warning}", path.display());
+                }
+                scene::spawn_scene_entities(
+                    &mut world.ecs,
+                    &mut world.assets,
+                    &imported.scene,
+                    path,
+                )
+            });
+        match spawned {
+            Ok(spawned) => {
+                world.hierarchy.invalidate();
+                tracing::info!(path = %path.display(), entities = spawned.len(), plugin = self.plugin, "imported glTF");
+                spawned
+                    .first()
+                    .map(|root| to_api(*root))
+                    .ok_or_else(|| CtxError::Invalid {
+                        message: format!("`{}` gave no entity to import", path.display()),
+                    })
+            }
+            Err(error) => {
+                tracing::error!("{error}");
+                Err(scene_error(error))
+            }
+        }
+    }
 }

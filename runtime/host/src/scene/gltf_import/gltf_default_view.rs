@@ -27,9 +27,7 @@ pub fn default_view(document: &gltf::Document, tree: &NodeTree, first_id: u64) -
     let mut extra = Vec::new();
     let nodes: Vec<gltf::Node<'_>> = document.nodes().collect();
     let in_scene = |f: &dyn Fn(&gltf::Node<'_>) -> bool| {
-        tree.order
-            .iter()
-            .any(|&i| nodes.get(i).is_some_and(f))
+        tree.order.iter().any(|&i| nodes.get(i).is_some_and(f))
     };
     if !in_scene(&|n| n.camera().is_some()) {
         let (min, max) = bounds(&nodes, tree).unwrap_or((Vec3::splat(-1.0), Vec3::splat(1.0)));

@@ -96,6 +96,18 @@ fn left_out(document: &gltf::Document) -> Vec<String> {
             "morph targets are not supported yet; the meshes are shown without them".to_owned(),
         );
     }
+    let lines: Vec<String> = document
+        .meshes()
+        .filter(|m| !super::gltf_entities::has_triangles(m))
+        .map(|m| m.index().to_string())
+        .collect();
+    if !lines.is_empty() {
+        warnings.push(format!(
+            "mesh(es) {} hold only points or lines, which Onyx does not draw yet; their nodes \
+             get no mesh renderer",
+            lines.join(", ")
+        ));
+    }
     let spots = document
         .lights()
         .into_iter()

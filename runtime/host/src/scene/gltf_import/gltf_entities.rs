@@ -5,7 +5,9 @@
 use std::path::Path;
 
 use onyx_plugin_api::glam::{Mat4, Quat, Vec3};
-use onyx_plugin_api::{Camera, Light, MeshRendererFile, Projection, ShadingMode, Transform};
+use onyx_plugin_api::{
+    AnimatorFile, Camera, Light, MeshRendererFile, Projection, ShadingMode, Transform,
+};
 use onyx_render::SubAsset;
 
 use super::gltf_node_tree::NodeTree;
@@ -29,8 +31,14 @@ const MIN_NEAR: f32 = 1e-3;
 const FADED_LUX: f32 = 0.01;
 /// Range of a point light whose intensity is not positive, metres.
 const FALLBACK_RANGE: f32 = 10.0;
+/// Onyx intensity per candela of a point or spot light. Onyx has no exposure: its point
+/// lights fall off as `intensity / (1 + d²)` onto a surface drawn at full colour by 1, so
+/// 100 cd one metre away lights like the default sun. Too high blows lamps out to white
+/// (Blender's exports give 15..200 cd); too low leaves them dark.
+pub const ONYX_PER_CANDELA: f32 = 0.01;
 
-/// The root (named after the file, at the origin) then one entity per node of `tree`, parents
+/// The root (named after the file, at the origin, with an animator playing all of the file's
+/// animations when it has any) then one entity per node of `tree`, parents
 /// before children. Mesh renderers name `FILE#mesh/N` with `FILE` as written beside the
 /// scene (the file's own name): spawned with the glTF path as the scene path, that is the
 /// file itself.
@@ -39,10 +47,19 @@ pub fn gltf_entities(document: &gltf::Document, tree: &NodeTree, path: &Path) ->
     let root_name = path
         .file_stem()
         .map_or_else(|| "glTF".to_owned(), |s| s.to_string_lossy().into_owned());
+    // The root plays every animation of the file, looping, from the start.
+    let animator = (document.animations().next().is_some()).then(|| AnimatorFile {
+        clip: file_name.to_string_lossy().into_owned(),
+        time: 0.0,
+        speed: 1.0,
+        playing: true,
+        looping: true,
+    });
     let mut entities = vec![SceneEntity {
         id: Some(ROOT_ID),
         name: Some(root_name),
         transform: Some(Transform::IDENTITY),
+        animator,
         ..SceneEntity::default()
     }];
     let nodes: Vec<gltf::Node<'_>> = document.nodes().collect();
@@ -64,7 +81,7 @@ pub fn gltf_entities(document: &gltf::Document, tree: &NodeTree, path: &Path) ->
             transform: Some(node_transform(node)),
             ..SceneEntity::default()
         };
-        if let Some(mesh) = node.mesh() {
+        if let Some(mesh) = node.mesh().filter(has_triangles) {
             entity.mesh_renderer = Some(MeshRendererFile {
                 mesh: SubAsset::Mesh(mesh.index())
                     .path_in(file_name)
@@ -87,6 +104,17 @@ pub fn gltf_entities(document: &gltf::Document, tree: &NodeTree, path: &Path) ->
         entities.push(entity);
     }
     entities
+}
+
+/// Whether a mesh has a primitive drawn as triangles (points and lines are not drawn yet).
+pub fn has_triangles(mesh: &gltf::Mesh<'_>) -> bool {
+    use gltf::mesh::Mode;
+    mesh.primitives().any(|p| {
+        matches!(
+            p.mode(),
+            Mode::Triangles | Mode::TriangleStrip | Mode::TriangleFan
+        )
+    })
 }
 
 /// A node's local transform: its translation, rotation and scale, or its matrix decomposed
@@ -165,9 +193,9 @@ fn convert_camera(camera: &gltf::Camera<'_>, active: bool) -> Camera {
     converted
 }
 
-/// A `KHR_lights_punctual` light: directional and point as they are (intensity in lux and
-/// candela taken as Onyx's multiplier), spot as point; a light without a range reaches where
-/// it falls to [`FADED_LUX`].
+/// A `KHR_lights_punctual` light: directional (lux taken as Onyx's multiplier), point and
+/// spot as point lights ([`ONYX_PER_CANDELA`]); a light without a range reaches where it
+/// falls to [`FADED_LUX`].
 fn convert_light(light: &gltf::khr_lights_punctual::Light<'_>) -> Light {
     use gltf::khr_lights_punctual::Kind;
     let color = light.color();
@@ -176,7 +204,7 @@ fn convert_light(light: &gltf::khr_lights_punctual::Light<'_>) -> Light {
         Kind::Directional => Light::Directional { color, intensity },
         Kind::Point | Kind::Spot { .. } => Light::Point {
             color,
-            intensity,
+            intensity: intensity * ONYX_PER_CANDELA,
             range: light.range().filter(|r| *r > 0.0).unwrap_or_else(|| {
                 if intensity > 0.0 {
                     (intensity / FADED_LUX).sqrt()

@@ -18,6 +18,7 @@ mod gltf_node_tree;
 use std::path::Path;
 
 pub use gltf_document::{GltfDocument, SUPPORTED_EXTENSIONS};
+pub use gltf_entities::ONYX_PER_CANDELA;
 pub use gltf_import_error::GltfImportError;
 pub use gltf_node_tree::NodeTree;
 

@@ -102,9 +102,10 @@ pub(crate) fn load_gltf_mesh_source(
         ));
     }
     if parts.is_empty() {
-        return Err(ModelLoadError::Empty {
-            path: path.to_owned(),
-        });
+        return Err(gltf_error(format!(
+            "mesh {mesh_index} has no triangles to draw ({})",
+            skipped.join(", ")
+        )));
     }
     let mut source = ModelSource::new(path.to_owned(), parts, Vec::new(), warnings);
     for image in document.images() {

@@ -16,5 +16,6 @@ mod gltf_material;
 mod gltf_mesh_loader;
 mod gltf_primitive;
 
+pub use gltf_buffers::load_buffers as load_gltf_buffers;
 pub(crate) use gltf_loader::load_gltf_source;
 pub(crate) use gltf_mesh_loader::load_gltf_mesh_source;
