@@ -4,7 +4,7 @@ use std::collections::HashMap;
 use std::path::{Path, PathBuf};
 
 use onyx_plugin_api::{AnimationId, MeshId, TextureId};
-use onyx_render::SubAsset;
+use onyx_render::{ImportSettings, SubAsset};
 
 /// Ids for model and texture files, one per path, valid for the life of the host. It holds
 /// no GPU data: a host without a renderer still hands out ids (so plugins and scenes behave
@@ -18,6 +18,7 @@ pub struct AssetRegistry {
     texture_ids: HashMap<PathBuf, TextureId>,
     animations: Vec<PathBuf>,
     animation_ids: HashMap<PathBuf, AnimationId>,
+    import_settings: HashMap<PathBuf, ImportSettings>,
 }
 
 impl AssetRegistry {
@@ -88,6 +89,29 @@ impl AssetRegistry {
         self.textures.push(path.to_path_buf());
         self.texture_ids.insert(path.to_path_buf(), id);
         id
+    }
+
+    /// Brings the model file at `path` (as registered) in with `settings` from now on; the
+    /// default settings forget any given before.
+    pub fn set_import_settings(&mut self, path: &Path, settings: ImportSettings) {
+        let (file, _) = SubAsset::split(path);
+        if settings == ImportSettings::default() {
+            self.import_settings.remove(&file);
+        } else {
+            self.import_settings.insert(file, settings);
+        }
+    }
+
+    /// How the model at `path` is imported: the settings given for its file (a piece of a
+    /// file, `file.glb#mesh/2`, has its file's), else the default.
+    pub fn import_settings(&self, path: &Path) -> ImportSettings {
+        let (file, _) = SubAsset::split(path);
+        self.import_settings.get(&file).copied().unwrap_or_default()
+    }
+
+    /// Every model given settings other than the default, by path.
+    pub fn all_import_settings(&self) -> impl Iterator<Item = (&Path, &ImportSettings)> {
+        self.import_settings.iter().map(|(p, s)| (p.as_path(), s))
     }
 
     /// The id of the animation at `path` (`file.glb#animation/N`, or `file.glb` for all of

@@ -30,6 +30,15 @@ pub fn parse_scene(text: &str, path: &Path) -> Result<SceneFile, SceneError> {
                 message,
             })?;
     }
+    for (model, settings) in &scene.imports {
+        settings
+            .settings()
+            .map_err(|message| SceneError::InvalidImport {
+                path: path.to_path_buf(),
+                model: model.clone(),
+                message,
+            })?;
+    }
     check_hierarchy(&scene, path)?;
     Ok(scene)
 }

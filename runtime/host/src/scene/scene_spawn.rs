@@ -98,6 +98,14 @@ pub fn spawn_scene_entities(
             return Err(error);
         }
     };
+    // The models these settings are for load when first drawn or collided, after this.
+    let scene_dir = path.parent().unwrap_or(Path::new(""));
+    for (model, settings) in &scene.imports {
+        if let Ok(settings) = settings.settings() {
+            let found = assets.find_beside(scene_dir, Path::new(model));
+            assets.set_import_settings(&found, settings);
+        }
+    }
     let mut builder = hecs::EntityBuilder::new();
     for (e, (builtins, plugin)) in spawned.iter().zip(prepared) {
         for value in &builtins {

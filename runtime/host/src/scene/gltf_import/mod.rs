@@ -61,6 +61,7 @@ pub fn import_gltf_scene(path: &Path, view: bool) -> Result<GltfScene, GltfImpor
         scene: SceneFile {
             version: SCENE_FORMAT_VERSION,
             physics: None,
+            imports: Default::default(),
             entities,
         },
         warnings: file.warnings,
