@@ -80,6 +80,7 @@ fn host_config(args: &HostArgs) -> HostConfig {
         search_path: PluginSearchPath::from_env(),
         // Relative model and texture paths start from the working directory.
         asset_root: Default::default(),
+        keep_old_builds: args.keep_old_builds,
         ..HostConfig::default()
     }
 }

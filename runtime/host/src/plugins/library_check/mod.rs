@@ -139,16 +139,52 @@ fn truncation_of(header: &Header, endian: Endianness, data: &[u8]) -> u64 {
 }
 
 /// Whether `path` is an ELF file that its own headers say is complete (`false` for other
-/// formats, which need another way to tell).
+/// formats, which need another way to tell). Reads only the ELF header and the program
+/// headers (a few hundred bytes), not the file.
 pub fn is_complete_elf(path: &Path) -> bool {
-    let Ok(data) = std::fs::read(path) else {
+    use std::io::Read as _;
+    let Ok(file) = std::fs::File::open(path) else {
         return false;
     };
-    if data.len() < 5 || &data[..4] != b"\x7fELF" {
+    let Ok(len) = file.metadata().map(|m| m.len()) else {
+        return false;
+    };
+    // The ELF header, then as far as the program headers reach (they follow it in every
+    // library a linker writes; a table further in is read whole).
+    let mut head = Vec::with_capacity(4096);
+    if file.take(4096).read_to_end(&mut head).is_err() || head.len() < 64 {
         return false;
     }
-    !matches!(check_library(&data), Err(LibraryProblem::Truncated { .. }))
-        && Header::parse(&*data).is_ok()
+    if &head[..4] != b"\x7fELF" || head[4] != elf::ELFCLASS64 {
+        return false;
+    }
+    let Ok(header) = Header::parse(&*head) else {
+        return false;
+    };
+    let Ok(endian) = header.endian() else {
+        return false;
+    };
+    let ph_end = header
+        .e_phoff(endian)
+        .saturating_add(u64::from(header.e_phentsize(endian)) * u64::from(header.e_phnum(endian)));
+    if ph_end > head.len() as u64 {
+        let Ok(all) = std::fs::read(path) else {
+            return false;
+        };
+        return needed_size(header_of(&all), &all).is_some_and(|needed| needed <= all.len() as u64);
+    }
+    needed_size(Some(header), &head).is_some_and(|needed| needed <= len)
+}
+
+fn header_of(data: &[u8]) -> Option<&Header> {
+    Header::parse(data).ok()
+}
+
+/// The size `header` (whose program headers lie in `data`) says its file has.
+fn needed_size(header: Option<&Header>, data: &[u8]) -> Option<u64> {
+    let header = header?;
+    let endian = header.endian().ok()?;
+    Some(truncation_of(header, endian, data))
 }
 
 #[cfg(test)]
@@ -197,5 +233,32 @@ mod tests {
             Ok(()),
             "not ELF: the loader judges"
         );
+    }
+
+    #[test]
+    fn completeness_is_read_from_the_headers_alone() {
+        let libc = this_library();
+        if libc.is_empty() {
+            eprintln!("skipped: no libc.so mapped (not glibc on Linux)");
+            return;
+        }
+        let dir = tempfile::tempdir().unwrap();
+        let path = dir.path().join("libc-copy.so");
+        std::fs::write(&path, &libc).unwrap();
+        assert!(is_complete_elf(&path));
+        // Cut anywhere after the headers: the headers still say how long it must be.
+        for cut in [libc.len() / 3, libc.len() - 1] {
+            std::fs::write(&path, &libc[..cut]).unwrap();
+            assert!(!is_complete_elf(&path), "cut at {cut}");
+        }
+        std::fs::write(&path, &libc[..10]).unwrap();
+        assert!(!is_complete_elf(&path), "a cut ELF header");
+        std::fs::write(
+            &path,
+            b"plain text, long enough to hold an ELF header but not one",
+        )
+        .unwrap();
+        assert!(!is_complete_elf(&path), "not ELF");
+        assert!(!is_complete_elf(&dir.path().join("missing.so")));
     }
 }
