@@ -20,3 +20,4 @@ mod registry;
 mod reload;
 mod render;
 mod scenes;
+mod schema_changes;
