@@ -1,6 +1,7 @@
 //! `onyx`: the command line of the Onyx host.
 
 mod cli;
+mod crate_graph;
 mod dev;
 mod new_plugin;
 
