@@ -429,7 +429,7 @@ impl Host {
         // 4. The old plugin object is dropped inside its own image, then the image goes.
         let drop_started = Instant::now();
         let mut old = std::mem::replace(&mut slot.instance, new);
-        let old_library = std::mem::replace(&mut slot.library, Some(library));
+        let old_library = slot.library.replace(library);
         let old_origin = std::mem::replace(
             &mut slot.origin,
             PluginOrigin::Library {
