@@ -220,7 +220,9 @@ impl Host {
     /// is untouched. If anything before the swap fails — the new build cannot be loaded, or
     /// cannot read the running build's state — the old build keeps running untouched; if the
     /// new `on_attach` fails, the old build is attached again. A faulted plugin is revived
-    /// by a successful reload.
+    /// by a successful reload: its state is not carried over (it is not trusted), so the new
+    /// build starts empty, gets `on_init` again (once the host has initialised its plugins)
+    /// and the host logs that it did.
     pub fn reload_plugin(&mut self, name: &str) -> Result<(), ReloadError> {
         self.reload_from(name, None)
     }
@@ -445,6 +447,18 @@ impl Host {
             old.dispose()
         };
         drop(old);
+        if !was_running {
+            // Nothing came over from the faulted build: without `on_init` the new one would
+            // sit idle, never having set itself up.
+            tracing::warn!(
+                plugin = name,
+                "plugin revived by a good build after its fault, with empty state (the \
+                 faulted build's state is not carried over); calling its on_init again"
+            );
+            if self.initialized {
+                slot.call(&mut self.state, Stage::Init, |p, cx| p.on_init(cx));
+            }
+        }
         // The new image builds a fresh egui context: its textures start over.
         self.gui.forget(name);
         let dropped = drop_started.elapsed();

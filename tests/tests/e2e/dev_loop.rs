@@ -4,8 +4,10 @@
 //! edit in a crate two plugins share rebuilds both and swaps them in one frame, keeping
 //! their state when serde can map it and refusing the swap when it cannot.
 //!
-//! The scaffolded crates build into `target/scaffold` (not the main target directory: the
-//! outer `cargo test` holds its lock), once for all these tests; they take turns on it.
+//! The scaffolded crates build into this build's own target directory, as the README tells
+//! a plugin author to (`CARGO_TARGET_DIR=<checkout>/target`): they reuse every dependency
+//! already compiled there (cargo lets go of the directory's lock once the test binaries are
+//! built), so only the four Onyx crates and the scaffolded crate compile. They take turns.
 
 use std::io::{BufRead, BufReader};
 use std::path::{Path, PathBuf};
@@ -15,19 +17,21 @@ use std::time::{Duration, Instant};
 
 use onyx_tests::{onyx_binary, target_dir};
 
-/// The tests that build a scaffolded crate take turns (they share `target/scaffold`).
+/// The tests that build a scaffolded crate take turns (one cargo at a time in the target
+/// directory).
 static SCAFFOLD_TARGET: Mutex<()> = Mutex::new(());
 
 fn scaffold_target_lock() -> MutexGuard<'static, ()> {
     SCAFFOLD_TARGET.lock().unwrap_or_else(|e| e.into_inner())
 }
 
-/// Where scaffolded crates are built: a fixed directory, so later runs reuse the build.
+/// Where scaffolded crates are built: the target directory of this build (`target/`). Their
+/// names start `fixture-`, so `onyx plugins` does not list the libraries they leave there.
 fn scaffold_target_dir() -> PathBuf {
     target_dir()
         .parent()
         .expect("target/debug has a parent")
-        .join("scaffold")
+        .to_path_buf()
 }
 
 fn onyx(args: &[&str]) -> Output {
@@ -69,11 +73,11 @@ fn new_plugin(name: &str, parent: &Path) -> PathBuf {
 #[test]
 fn new_plugin_scaffolds_a_crate_that_builds_and_passes_its_tests() {
     let parent = tempfile::tempdir().unwrap();
-    let dir = new_plugin("scaffold-check", parent.path());
+    let dir = new_plugin("fixture-scaffold-check", parent.path());
 
     let manifest = std::fs::read_to_string(dir.join("Cargo.toml")).unwrap();
     for needle in [
-        "name = \"scaffold-check\"",
+        "name = \"fixture-scaffold-check\"",
         "crate-type = [\"cdylib\", \"rlib\"]",
         "[workspace]",
         "onyx-plugin-api = { path = ",
@@ -283,11 +287,11 @@ impl Drop for DevRun {
     }
 }
 
-/// `step N: x = X (speed S)` from the scaffolded plugin's log.
+/// `step N: travelled D m (speed S)` from the scaffolded plugin's log: steps, metres, speed.
 fn progress(line: &str) -> Option<(u64, f32, f32)> {
     let rest = &line[line.find("step ")? + 5..];
-    let (steps, rest) = rest.split_once(": x = ")?;
-    let (x, rest) = rest.split_once(" (speed ")?;
+    let (steps, rest) = rest.split_once(": travelled ")?;
+    let (x, rest) = rest.split_once(" m (speed ")?;
     let (speed, _) = rest.split_once(')')?;
     Some((steps.parse().ok()?, x.parse().ok()?, speed.parse().ok()?))
 }
@@ -309,23 +313,23 @@ fn edit(file: &Path, from: &str, to: &str) {
 #[test]
 fn dev_rebuilds_and_hot_reloads_a_scaffolded_plugin_on_save() {
     let parent = tempfile::tempdir().unwrap();
-    let dir = new_plugin("dev-loop-probe", parent.path());
+    let dir = new_plugin("fixture-dev-loop-probe", parent.path());
     let lib_rs = dir.join("src/lib.rs");
     let _turn = scaffold_target_lock();
 
     let mut dev = DevRun::start(&dir);
-    // The first build may compile the dependencies (once per target/scaffold).
+    // The first build compiles the Onyx crates for the scaffold (once per target directory).
     let (i, line) = dev.wait_for(
         "the plugin running at speed 1",
         0,
         Duration::from_secs(900),
         |l| progress(l).is_some_and(|(_, _, speed)| speed == 1.0),
     );
-    let (steps_before, x_before, _) = progress(&line).unwrap();
+    let (steps_before, travelled_before, _) = progress(&line).unwrap();
     assert!(
         dev.lines()[..i]
             .iter()
-            .any(|l| l.contains("loaded plugin library") && l.contains("dev_loop_probe")),
+            .any(|l| l.contains("loaded plugin library") && l.contains("fixture_dev_loop_probe")),
         "{}",
         dev.stderr_tail()
     );
@@ -360,11 +364,11 @@ fn dev_rebuilds_and_hot_reloads_a_scaffolded_plugin_on_save() {
     let (j, line) = dev.wait_for("progress at speed 2", r, Duration::from_secs(10), |l| {
         progress(l).is_some_and(|(_, _, speed)| speed == 2.0)
     });
-    let (steps_after, x_after, _) = progress(&line).unwrap();
+    let (steps_after, travelled_after, _) = progress(&line).unwrap();
     assert!(
-        steps_after > steps_at_reload && x_after > x_before,
-        "state and world carried over: before {steps_before} steps x={x_before}, \
-         after {steps_after} steps x={x_after}\n{}",
+        steps_after > steps_at_reload && travelled_after > travelled_before,
+        "state and world carried over: before {steps_before} steps {travelled_before} m, \
+         after {steps_after} steps {travelled_after} m\n{}",
         dev.stderr_tail()
     );
 
@@ -482,7 +486,7 @@ static CRASH_ON_LOAD: extern \"C\" fn() = {
     );
 }
 
-/// The crate `dev-graph-shared`: the speed and part of the state of two plugins.
+/// The crate `fixture-dev-graph-shared`: the speed and part of the state of two plugins.
 const SHARED_LIB_RS: &str = r#"//! Game code two plugins share: their speed and a part of their state.
 
 /// How fast the plugins move their entities, metres per second.
@@ -502,18 +506,18 @@ fn plugin_on_shared(name: &str, parent: &Path) -> PathBuf {
     edit(
         &dir.join("Cargo.toml"),
         "[dependencies]\n",
-        "[dependencies]\ndev-graph-shared = { path = \"../shared\" }\n",
+        "[dependencies]\nfixture-dev-graph-shared = { path = \"../shared\" }\n",
     );
     let lib_rs = dir.join("src/lib.rs");
     edit(
         &lib_rs,
         "pub const SPEED: f32 = 1.0;",
-        "pub const SPEED: f32 = dev_graph_shared::SPEED;",
+        "pub const SPEED: f32 = fixture_dev_graph_shared::SPEED;",
     );
     edit(
         &lib_rs,
-        "    pub mover: Option<Entity>,\n",
-        "    pub mover: Option<Entity>,\n    #[serde(default)]\n    pub tally: dev_graph_shared::Tally,\n",
+        "    pub cube: Option<Entity>,\n",
+        "    pub cube: Option<Entity>,\n    #[serde(default)]\n    pub tally: fixture_dev_graph_shared::Tally,\n",
     );
     dir
 }
@@ -525,14 +529,14 @@ fn dev_rebuilds_and_swaps_every_plugin_that_depends_on_an_edited_crate() {
     std::fs::create_dir_all(shared.join("src")).unwrap();
     std::fs::write(
         shared.join("Cargo.toml"),
-        "[package]\nname = \"dev-graph-shared\"\nversion = \"0.1.0\"\nedition = \"2021\"\n\
+        "[package]\nname = \"fixture-dev-graph-shared\"\nversion = \"0.1.0\"\nedition = \"2021\"\n\
          publish = false\n\n[dependencies]\nserde = { version = \"1\", features = [\"derive\"] }\n",
     )
     .unwrap();
     let shared_rs = shared.join("src/lib.rs");
     std::fs::write(&shared_rs, SHARED_LIB_RS).unwrap();
-    let a = plugin_on_shared("dev-graph-a", parent.path());
-    let b = plugin_on_shared("dev-graph-b", parent.path());
+    let a = plugin_on_shared("fixture-dev-graph-a", parent.path());
+    let b = plugin_on_shared("fixture-dev-graph-b", parent.path());
     let _turn = scaffold_target_lock();
 
     let mut dev = DevRun::start_all(&[&a, &b]);
@@ -543,17 +547,19 @@ fn dev_rebuilds_and_swaps_every_plugin_that_depends_on_an_edited_crate() {
         "plugin a at speed 1",
         0,
         Duration::from_secs(900),
-        running_at(1.0, "dev_graph_a"),
+        running_at(1.0, "fixture_dev_graph_a"),
     );
     let (a_steps, _, _) = progress(&line).unwrap();
     dev.wait_for(
         "plugin b at speed 1",
         0,
         Duration::from_secs(60),
-        running_at(1.0, "dev_graph_b"),
+        running_at(1.0, "fixture_dev_graph_b"),
     );
     assert!(
-        dev.lines().iter().any(|l| l.contains("dev-graph-shared")),
+        dev.lines()
+            .iter()
+            .any(|l| l.contains("fixture-dev-graph-shared")),
         "the shared crate is not watched:\n{}",
         dev.stderr_tail()
     );
@@ -579,7 +585,7 @@ fn dev_rebuilds_and_swaps_every_plugin_that_depends_on_an_edited_crate() {
         "{}",
         dev.stderr_tail()
     );
-    for plugin in ["dev_graph_a", "dev_graph_b"] {
+    for plugin in ["fixture_dev_graph_a", "fixture_dev_graph_b"] {
         let (_, line) = dev.wait_for("a reload message", i, Duration::from_secs(10), |l| {
             l.contains(plugin) && reloaded_after(l).is_some()
         });
@@ -591,13 +597,13 @@ fn dev_rebuilds_and_swaps_every_plugin_that_depends_on_an_edited_crate() {
         "progress at speed 2",
         r,
         Duration::from_secs(10),
-        running_at(2.0, "dev_graph_b"),
+        running_at(2.0, "fixture_dev_graph_b"),
     );
 
     // A type serde cannot map: both swaps are refused with one sentence each, and the
     // running builds go on.
     edit(&shared_rs, "pub laps: u64,", "pub laps: String,");
-    for plugin in ["dev_graph_a", "dev_graph_b"] {
+    for plugin in ["fixture_dev_graph_a", "fixture_dev_graph_b"] {
         let (_, line) = dev.wait_for("the refusal", j, Duration::from_secs(300), |l| {
             l.contains(&format!("plugin `{plugin}` was not reloaded"))
         });
@@ -615,7 +621,7 @@ fn dev_rebuilds_and_swaps_every_plugin_that_depends_on_an_edited_crate() {
         "the old builds running on",
         k,
         Duration::from_secs(10),
-        running_at(2.0, "dev_graph_a"),
+        running_at(2.0, "fixture_dev_graph_a"),
     );
     assert!(
         !dev.lines().iter().any(|l| l.contains("faulted")),

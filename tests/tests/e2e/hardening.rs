@@ -582,3 +582,43 @@ fn damaged_libraries_are_refused_before_the_system_loader_sees_them() {
         assert!(!err.contains("native crash"), "{what}: {err}");
     }
 }
+
+/// Keeps the window open while it has "unsaved work", then quits when told it was saved.
+#[derive(Default)]
+struct Careful {
+    unsaved: bool,
+}
+
+impl Plugin for Careful {
+    fn on_event(&mut self, ctx: &mut onyx_plugin_api::Ctx, event: &onyx_plugin_api::Event) {
+        use onyx_plugin_api::{Event, WindowEvent};
+        if matches!(event, Event::Window(WindowEvent::CloseRequested)) && self.unsaved {
+            ctx.prevent_close();
+            // "Saved": the next close goes through.
+            self.unsaved = false;
+        }
+    }
+}
+
+#[test]
+fn a_plugin_with_unsaved_work_keeps_the_window_open_to_ask() {
+    use onyx_plugin_api::WindowEvent;
+    let mut host = HeadlessHost::new();
+    host.host_mut()
+        .add_plugin("careful", Careful { unsaved: true })
+        .unwrap();
+    host.step(1);
+    host.host_mut().push_event(WindowEvent::CloseRequested);
+    assert!(!host.host_mut().frame(1.0 / 60.0).quit, "kept open to ask");
+    host.host_mut().push_event(WindowEvent::CloseRequested);
+    assert!(
+        host.host_mut().frame(1.0 / 60.0).quit,
+        "nothing left to ask: it closes"
+    );
+
+    // Without such a plugin a close request ends the run after its frame, as before.
+    let mut host = HeadlessHost::new();
+    host.step(1);
+    host.host_mut().push_event(WindowEvent::CloseRequested);
+    assert!(host.host_mut().frame(1.0 / 60.0).quit);
+}

@@ -5,6 +5,7 @@ mod cli;
 mod ctx_api;
 mod dev_loop;
 mod editor;
+mod examples;
 mod faults;
 mod fuzz;
 mod gui;
