@@ -48,7 +48,8 @@ pub fn content_hash(bytes: &[u8]) -> u64 {
     (u64::from(crc32fast::hash(bytes)) << 32) ^ bytes.len() as u64
 }
 
-/// Reads `path`, checks it and opens it through a copy at a unique path.
+/// Reads `path`, checks it and opens it through a copy at a unique path (of the part the
+/// loader maps, `library_check::loaded_part`).
 ///
 /// The dynamic loader returns the already-mapped image when asked for a path it has opened
 /// before, so each load — the first, and every hot reload — opens a fresh copy; on Unix the
@@ -167,7 +168,18 @@ fn fresh_copy(path: &Path, bytes: &[u8]) -> Result<PathBuf, PluginLoadError> {
         .map(|f| f.to_string_lossy().into_owned())
         .unwrap_or_else(|| "plugin".into());
     let copy = dir.join(format!("{n}-{file_name}"));
-    std::fs::write(&copy, bytes).map_err(copy_error)?;
+    // Only what the loader maps (see `loaded_part`): the file was checked whole already.
+    let written = match super::library_check::loaded_part(bytes) {
+        Some((end, header)) => {
+            use std::io::Write as _;
+            std::fs::File::create(&copy).and_then(|mut file| {
+                file.write_all(&header)?;
+                file.write_all(&bytes[header.len()..end])
+            })
+        }
+        None => std::fs::write(&copy, bytes),
+    };
+    written.map_err(copy_error)?;
     Ok(copy)
 }
 
