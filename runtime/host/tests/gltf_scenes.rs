@@ -266,3 +266,24 @@ fn a_gltf_scene_spawns_with_parents_world_poses_and_a_default_view() {
         .collect();
     assert!(names.contains(&"BoxAnimated".to_owned()), "{names:?}");
 }
+
+#[test]
+fn a_file_the_gltf_crate_panics_on_is_an_error_naming_it() {
+    //! The gltf crate's validation indexes `accessors` with a primitive's POSITION before
+    //! checking it: such a file panicked inside the import.
+    let dir = std::env::temp_dir().join(format!("onyx-gltf-panic-{}", std::process::id()));
+    let _ = std::fs::create_dir_all(&dir);
+    let path = dir.join("bad-position.gltf");
+    std::fs::write(
+        &path,
+        r#"{"asset":{"version":"2.0"},"meshes":[{"primitives":[{"attributes":{"POSITION":99}}]}],"nodes":[{"mesh":0}],"scenes":[{"nodes":[0]}]}"#,
+    )
+    .unwrap_or_else(|e| panic!("{e}"));
+    match import_gltf_scene(&path, true) {
+        Err(error @ GltfImportError::Invalid { .. }) => {
+            assert!(error.to_string().contains("bad-position.gltf"), "{error}");
+        }
+        other => panic!("expected an invalid-file error, got {other:?}"),
+    }
+    let _ = std::fs::remove_dir_all(&dir);
+}

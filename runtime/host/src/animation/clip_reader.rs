@@ -45,6 +45,16 @@ pub struct ReadClip {
 
 /// Reads `path`: `file.glb#animation/N` gives that animation, `file.glb` all of them.
 pub fn read_clip(path: &Path) -> Result<ReadClip, ClipError> {
+    // The gltf crate panics on some malformed files: the guard turns that into an error.
+    onyx_render::mesh::catch_gltf_panics(path, || Ok(read(path))).unwrap_or_else(|e| {
+        Err(ClipError::File(GltfImportError::Invalid {
+            path: path.to_owned(),
+            message: crate::scene::gltf_import::panic_message(e),
+        }))
+    })
+}
+
+fn read(path: &Path) -> Result<ReadClip, ClipError> {
     let (file, sub) = SubAsset::split(path);
     let opened = GltfDocument::open(&file)?;
     let document = opened.document();

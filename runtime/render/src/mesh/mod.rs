@@ -39,6 +39,7 @@ mod sub_asset;
 mod up_axis;
 mod vertex;
 
+pub use gltf::catch_gltf_panics;
 pub use gltf::load_gltf_buffers;
 pub use import_settings::ImportSettings;
 pub use invalid_mesh_error::InvalidMeshError;

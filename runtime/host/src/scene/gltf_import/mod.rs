@@ -46,6 +46,24 @@ pub fn is_gltf_scene(path: &Path) -> bool {
 /// [`GltfImportError`] when the file cannot be read, is not glTF 2.0 or requires an
 /// extension Onyx lacks.
 pub fn import_gltf_scene(path: &Path, view: bool) -> Result<GltfScene, GltfImportError> {
+    // The gltf crate panics on some malformed files: the guard turns that into an error.
+    onyx_render::mesh::catch_gltf_panics(path, || Ok(import(path, view))).unwrap_or_else(|e| {
+        Err(GltfImportError::Invalid {
+            path: path.to_owned(),
+            message: crate::scene::gltf_import::panic_message(e),
+        })
+    })
+}
+
+/// What a panic inside the gltf crate, caught by its guard, says about the file.
+pub(crate) fn panic_message(error: onyx_render::ModelLoadError) -> String {
+    match error {
+        onyx_render::ModelLoadError::Gltf { message, .. } => message,
+        other => other.to_string(),
+    }
+}
+
+fn import(path: &Path, view: bool) -> Result<GltfScene, GltfImportError> {
     let file = GltfDocument::open(path)?;
     let document = file.document();
     let tree = NodeTree::new(document);
