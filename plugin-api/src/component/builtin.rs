@@ -6,7 +6,7 @@ use std::fmt::Debug;
 use serde::de::DeserializeOwned;
 use serde::Serialize;
 
-use crate::{Entity, MeshId, TextureId};
+use crate::{AnimationId, Entity, MeshId, TextureId};
 
 /// A component the host knows: drawn, simulated, saved in scene files, shown in state dumps
 /// and edited by tools. Each built-in is one type implementing this trait in its own file,
@@ -49,6 +49,10 @@ pub trait HostRefs {
     fn mesh_file(&self, mesh: MeshId) -> Option<String>;
     /// The file of a loaded image.
     fn texture_file(&self, texture: TextureId) -> Option<String>;
+    /// Whether `animation` is none or an animation this host registered.
+    fn knows_animation(&self, animation: AnimationId) -> bool;
+    /// The file (and piece: `file.glb#animation/N`) of a registered animation.
+    fn animation_file(&self, animation: AnimationId) -> Option<String>;
     /// Whether `entity` exists.
     fn contains(&self, entity: Entity) -> bool;
     /// The id a scene file (or a dump) names `entity` by.
@@ -61,6 +65,8 @@ pub trait FileRefs {
     fn mesh(&mut self, path: &str) -> MeshId;
     /// The id of the image file at `path` (registered if new).
     fn texture(&mut self, path: &str) -> TextureId;
+    /// The id of the animation at `path` (`file.glb#animation/N`; registered if new).
+    fn animation(&mut self, path: &str) -> AnimationId;
     /// The entity the file names `file_id`.
     fn entity(&self, file_id: u64) -> Option<Entity>;
 }

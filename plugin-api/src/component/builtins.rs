@@ -28,6 +28,7 @@ macro_rules! for_each_builtin {
             Light => light: $crate::Light as $crate::Light,
             RigidBody => rigid_body: $crate::RigidBody as $crate::RigidBody,
             Collider => collider: $crate::Collider as $crate::Collider,
+            Animator => animator: $crate::Animator as $crate::Animator,
         }
     };
 }

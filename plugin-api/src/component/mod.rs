@@ -11,11 +11,14 @@
 //! - `debug_line.rs`: [`DebugLine`], one frame's debug drawing.
 //! - `rigid_body.rs` ([`RigidBody`], [`BodyKind`], [`LockedAxes`]), `collider.rs`
 //!   ([`Collider`], [`ColliderShape`]), `ray_hit.rs` ([`RayHit`]): physics.
+//! - `animator.rs`: [`Animator`] ([`AnimationId`]), a node animation playing on the
+//!   entities below.
 //! - `component.rs`: [`Component`], a plugin's own serde component.
 //! - `component_type.rs`: [`ComponentType`], what `Ctx::get`/`set`/`remove` accept.
 //! - `bundle.rs`: [`Bundle`], components spawned together.
 //! - `entity_transform.rs`, `blob_format.rs`: rows of bulk queries, raw-blob encodings.
 
+mod animator;
 mod blob_format;
 mod builtin;
 mod builtins;
@@ -38,6 +41,7 @@ mod rigid_body;
 mod shading_mode;
 mod transform;
 
+pub use animator::{AnimationId, Animator, AnimatorFile};
 pub use blob_format::BlobFormat;
 pub use builtin::{Builtin, BuiltinFn, BuiltinVisitor, FileRefs, HostRefs, InvalidValue, Listed};
 pub use builtins::{BuiltinId, BuiltinValue};

@@ -120,6 +120,15 @@ impl Ctx<'_> {
         ok(self.host.scene_op(SceneOpFfi::SaveCopy, path.into()))
     }
 
+    /// Brings the glTF file (`.gltf`, `.glb`) at `path` into the world: its node tree as
+    /// entities (names, transforms, parents, a mesh renderer per mesh, cameras, lights, an
+    /// [`Animator`](crate::Animator) when it has animations) under one new root entity named
+    /// after the file, which it returns. A file that cannot be imported gives
+    /// [`CtxError::Scene`] naming it, and spawns nothing.
+    pub fn import_gltf(&mut self, path: &str) -> Result<Entity, CtxError> {
+        ok(self.host.import_gltf(path.into()))
+    }
+
     /// The scene file the world was last opened from or saved to (`None` for a new world).
     pub fn scene_path(&mut self) -> Option<String> {
         self.host.scene_path().into_option().map(Into::into)

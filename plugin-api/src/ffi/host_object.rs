@@ -95,6 +95,7 @@ pub trait HostObject {
     fn render_overrides(&self) -> RenderOverrides;
     fn pick(&mut self, ray: RayFfi) -> ROption<RayHit>;
     fn local_bounds(&mut self, entity: Entity) -> ROption<BoundsFfi>;
+    fn import_gltf(&mut self, path: RStr<'_>) -> RResult<Entity, CtxErrorFfi>;
 }
 
 /// A ray, as plain data.
@@ -482,6 +483,10 @@ impl<H: HostServices + ?Sized> HostObject for HostBridge<'_, H> {
                     .into()
             },
         )
+    }
+
+    fn import_gltf(&mut self, path: RStr<'_>) -> RResult<Entity, CtxErrorFfi> {
+        result("import_gltf", || self.0.import_gltf(path.as_str()))
     }
 }
 

@@ -107,4 +107,9 @@ pub trait ToolServices {
     fn local_bounds(&mut self, entity: Entity) -> Option<Bounds> {
         None
     }
+    /// Spawns the node tree of the glTF file at `path` under one new root entity, beside
+    /// the world; returns the root.
+    fn import_gltf(&mut self, path: &str) -> Result<Entity, CtxError> {
+        Err(unsupported("import_gltf"))
+    }
 }

@@ -6,6 +6,7 @@ use onyx_plugin_api::{
     BuiltinValue, Camera, Collider, Ctx, Light, Material, MeshId, MeshRenderer, Transform,
 };
 
+use crate::history::Command;
 use crate::state::EditorState;
 
 /// What the Create menu makes.
@@ -102,6 +103,44 @@ pub fn import_obj(ctx: &mut Ctx, state: &mut EditorState, path: &str) {
         value(MeshRenderer::new(mesh)),
     ];
     state.create(ctx, &name, components);
+}
+
+/// Brings the glTF file at `path` in as its node tree under one new entity named after the
+/// file, placed in front of the camera and selected (one undoable step). A file that cannot
+/// be imported spawns nothing and shows its error in the console.
+pub fn import_gltf(ctx: &mut Ctx, state: &mut EditorState, path: &str) {
+    let root = match ctx.import_gltf(path) {
+        Ok(root) => root,
+        Err(e) => return state.report(ctx, &format!("cannot import {path}"), e),
+    };
+    let at = state.viewport.spawn_point();
+    let placed = ctx
+        .get::<Transform>(root)
+        .map(|t| Transform {
+            translation: at,
+            ..t
+        })
+        .and_then(|t| ctx.set(root, t));
+    if let Err(e) = placed {
+        state.report(ctx, &format!("cannot place {path}"), e);
+    }
+    match crate::state::subtree(ctx, root).and_then(|entities| {
+        entities
+            .into_iter()
+            .map(|entity| {
+                crate::history::snapshot(ctx, entity)
+                    .map(|components| Command::Create { entity, components })
+            })
+            .collect::<Result<Vec<_>, _>>()
+    }) {
+        Ok(commands) => {
+            if let Some(command) = Command::group(commands) {
+                state.record(ctx, command);
+            }
+            state.select(root);
+        }
+        Err(e) => state.report(ctx, &format!("cannot record the import of {path}"), e),
+    }
 }
 
 fn value(component: impl Into<BuiltinValue>) -> ComponentValue {

@@ -20,6 +20,8 @@ pub enum FilePurpose {
     SaveAs,
     /// Import a model as a new entity.
     ImportObj,
+    /// Import a glTF file's node tree under a new entity.
+    ImportGltf,
     /// Load a plugin library.
     LoadPlugin,
 }
@@ -30,6 +32,7 @@ impl FilePurpose {
             FilePurpose::Open => "Open scene",
             FilePurpose::SaveAs => "Save scene as",
             FilePurpose::ImportObj => "Import OBJ model",
+            FilePurpose::ImportGltf => "Import glTF",
             FilePurpose::LoadPlugin => "Load plugin",
         }
     }
@@ -38,17 +41,18 @@ impl FilePurpose {
         match self {
             FilePurpose::Open => "Open",
             FilePurpose::SaveAs => "Save",
-            FilePurpose::ImportObj => "Import",
+            FilePurpose::ImportObj | FilePurpose::ImportGltf => "Import",
             FilePurpose::LoadPlugin => "Load",
         }
     }
 
-    /// The files listed (folders always are).
-    fn extension(self) -> &'static str {
+    /// The extensions of the files listed (folders always are).
+    fn extensions(self) -> &'static [&'static str] {
         match self {
-            FilePurpose::Open | FilePurpose::SaveAs => "ron",
-            FilePurpose::ImportObj => "obj",
-            FilePurpose::LoadPlugin => std::env::consts::DLL_EXTENSION,
+            FilePurpose::Open | FilePurpose::SaveAs => &["ron"],
+            FilePurpose::ImportObj => &["obj"],
+            FilePurpose::ImportGltf => &["gltf", "glb"],
+            FilePurpose::LoadPlugin => &[std::env::consts::DLL_EXTENSION],
         }
     }
 }
@@ -108,9 +112,12 @@ impl FileDialog {
         if let Ok(read) = std::fs::read_dir(&self.dir) {
             for entry in read.flatten() {
                 let is_dir = entry.file_type().is_ok_and(|t| t.is_dir());
-                let wanted = Path::new(&entry.file_name())
-                    .extension()
-                    .is_some_and(|e| e.eq_ignore_ascii_case(self.purpose.extension()));
+                let wanted = Path::new(&entry.file_name()).extension().is_some_and(|e| {
+                    self.purpose
+                        .extensions()
+                        .iter()
+                        .any(|wanted| e.eq_ignore_ascii_case(wanted))
+                });
                 if !is_dir && !wanted {
                     continue;
                 }

@@ -157,6 +157,7 @@ impl Plugin for Editor {
                             }
                         }
                         FilePurpose::ImportObj => create::import_obj(ctx, state, &path),
+                        FilePurpose::ImportGltf => create::import_gltf(ctx, state, &path),
                         FilePurpose::LoadPlugin => ctx.load_plugin(&path),
                     }
                 }

@@ -207,6 +207,11 @@ fn create_menu(ui: &mut egui::Ui, ctx: &mut Ctx, state: &mut EditorState) {
         let start = if models.is_dir() { models } else { ".".into() };
         state.file_dialog = Some(FileDialog::new(FilePurpose::ImportObj, &start));
     }
+    if ui.button("Import glTF…").clicked() {
+        let models = std::path::PathBuf::from("assets/models");
+        let start = if models.is_dir() { models } else { ".".into() };
+        state.file_dialog = Some(FileDialog::new(FilePurpose::ImportGltf, &start));
+    }
 }
 
 fn plugins_menu(ui: &mut egui::Ui, ctx: &mut Ctx, state: &mut EditorState) {

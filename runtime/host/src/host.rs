@@ -335,6 +335,8 @@ impl Host {
             self.state.clock.tick();
         }
         let dt = self.state.clock.time().delta;
+        // Animated poses before plugins read them.
+        self.state.animation.advance(&mut self.state.world, dt);
         for slot in &mut self.plugins {
             let flow = slot.call(&mut self.state, Stage::Update, |p, cx| p.on_update(cx, dt));
             if flow == Some(Flow::Quit) {
@@ -577,7 +579,8 @@ impl Host {
     /// Spawns the entities of the scene file at `path` (added to what is there). On error
     /// the world is unchanged and the error is also raised as a platform event.
     /// A scene that sets `physics` also sets the fixed step rate and the physics settings.
-    /// The file becomes the world's scene file (`Ctx::scene_path`: the one tools save to).
+    /// The file becomes the world's scene file (`Ctx::scene_path`: the one tools save to),
+    /// unless it is a glTF file (saving would overwrite the model).
     pub fn load_scene(&mut self, path: &Path) -> Result<usize, SceneError> {
         let loaded = scene::read_scene(path).and_then(|file| {
             let world = &mut self.state.world;
@@ -591,7 +594,9 @@ impl Host {
         match &loaded {
             Ok(n) => {
                 tracing::info!(path = %path.display(), entities = n, "loaded scene");
-                self.state.tools.scene_path = Some(path.to_path_buf());
+                // A glTF file opened as a scene is not where the scene is saved to.
+                self.state.tools.scene_path =
+                    (!scene::is_gltf_scene(path)).then(|| path.to_path_buf());
             }
             Err(error) => {
                 // Returned to the caller, who reports it; plugins hear of it as an event.
@@ -602,6 +607,12 @@ impl Host {
             }
         }
         loaded
+    }
+
+    /// The file tools save the scene to: the last scene file loaded or saved (never a glTF
+    /// file opened as a scene).
+    pub fn scene_path(&self) -> Option<&Path> {
+        self.state.tools.scene_path.as_deref()
     }
 
     /// Saves the world to `path` atomically.

@@ -42,6 +42,7 @@
 
 #![warn(missing_docs)]
 
+pub mod animation;
 pub(crate) mod assets;
 pub mod clock;
 pub mod console;

@@ -124,7 +124,7 @@ pub use light::{DirectionalLight, Lights, PointLight, MAX_POINT_LIGHTS};
 pub use material::Material;
 pub use mesh::{
     ImportSettings, InvalidMeshError, MeshData, MeshHandle, Model, ModelLoadError, ModelPart,
-    ModelSource, NormalMode, PartSource, UpAxis, Vertex,
+    ModelSource, NormalMode, PartSource, SubAsset, UpAxis, Vertex,
 };
 pub use model_material::ModelMaterial;
 pub use offscreen::{OffscreenTarget, OFFSCREEN_FORMAT};

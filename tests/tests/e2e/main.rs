@@ -8,6 +8,7 @@ mod editor;
 mod examples;
 mod faults;
 mod fuzz;
+mod gltf_scenes;
 mod gui;
 mod hardening;
 mod hierarchy;

@@ -9,9 +9,9 @@ use onyx_plugin_api::__ffi::with_ctx;
 use onyx_plugin_api::glam::{Quat, Vec3};
 use onyx_plugin_api::tools::ComponentValue;
 use onyx_plugin_api::{
-    BodyKind, Builtin, BuiltinFn, BuiltinId, BuiltinValue, Camera, Collider, Ctx, Entity, FileRefs,
-    Light, LockedAxes, Material, MeshId, MeshRenderer, Name, Parent, RigidBody, ShadingMode,
-    TextureId, Transform,
+    AnimationId, Animator, BodyKind, Builtin, BuiltinFn, BuiltinId, BuiltinValue, Camera, Collider,
+    Ctx, Entity, FileRefs, Light, LockedAxes, Material, MeshId, MeshRenderer, Name, Parent,
+    RigidBody, ShadingMode, TextureId, Transform,
 };
 use onyx_runtime::HeadlessHost;
 
@@ -71,6 +71,13 @@ fn sample(id: BuiltinId, ctx: &mut Ctx, parent: Entity) -> BuiltinValue {
             body.can_sleep = false;
             body.into()
         }
+        // No clip: scenes name clips; a plugin has no call to register one.
+        BuiltinId::Animator => Animator::new(AnimationId::NONE)
+            .with_speed(-0.5)
+            .with_looping(false)
+            .at(1.25)
+            .paused()
+            .into(),
         BuiltinId::Collider => Collider::capsule(0.75, 0.3)
             .with_density(250.0)
             .with_restitution(0.4)
@@ -214,6 +221,13 @@ impl FileRefs for DumpRefs<'_> {
             .assets()
             .texture_id(std::path::Path::new(path))
             .unwrap_or(TextureId::NONE)
+    }
+    fn animation(&mut self, path: &str) -> onyx_plugin_api::AnimationId {
+        self.host
+            .host()
+            .assets()
+            .animation_id(std::path::Path::new(path))
+            .unwrap_or(onyx_plugin_api::AnimationId::NONE)
     }
     fn entity(&self, file_id: u64) -> Option<Entity> {
         Some(Entity::from_bits(file_id))

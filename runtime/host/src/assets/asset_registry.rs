@@ -3,7 +3,8 @@
 use std::collections::HashMap;
 use std::path::{Path, PathBuf};
 
-use onyx_plugin_api::{MeshId, TextureId};
+use onyx_plugin_api::{AnimationId, MeshId, TextureId};
+use onyx_render::{ImportSettings, SubAsset};
 
 /// Ids for model and texture files, one per path, valid for the life of the host. It holds
 /// no GPU data: a host without a renderer still hands out ids (so plugins and scenes behave
@@ -15,6 +16,9 @@ pub struct AssetRegistry {
     mesh_ids: HashMap<PathBuf, MeshId>,
     textures: Vec<PathBuf>,
     texture_ids: HashMap<PathBuf, TextureId>,
+    animations: Vec<PathBuf>,
+    animation_ids: HashMap<PathBuf, AnimationId>,
+    import_settings: HashMap<PathBuf, ImportSettings>,
 }
 
 impl AssetRegistry {
@@ -37,8 +41,16 @@ impl AssetRegistry {
     /// read it (from the asset root: the working directory by default), then beside each
     /// folder above that file (a scene in `assets/scenes/` naming `assets/models/x.obj`), so
     /// the same scene shows the same models from any working directory. Found nowhere, it is
-    /// kept as written (the load error then names it).
+    /// kept as written (the load error then names it). A piece of a model file
+    /// (`city.glb#mesh/3`, [`SubAsset`]) is found by its file and keeps its piece.
     pub fn find_beside(&self, folder: &Path, written: &Path) -> PathBuf {
+        if let (file, Some(sub)) = SubAsset::split(written) {
+            return sub.path_in(&self.find_file_beside(folder, &file));
+        }
+        self.find_file_beside(folder, written)
+    }
+
+    fn find_file_beside(&self, folder: &Path, written: &Path) -> PathBuf {
         if written.is_absolute() || written.as_os_str().is_empty() {
             return written.to_path_buf();
         }
@@ -77,6 +89,57 @@ impl AssetRegistry {
         self.textures.push(path.to_path_buf());
         self.texture_ids.insert(path.to_path_buf(), id);
         id
+    }
+
+    /// Brings the model file at `path` (as registered) in with `settings` from now on; the
+    /// default settings forget any given before.
+    pub fn set_import_settings(&mut self, path: &Path, settings: ImportSettings) {
+        let (file, _) = SubAsset::split(path);
+        if settings == ImportSettings::default() {
+            self.import_settings.remove(&file);
+        } else {
+            self.import_settings.insert(file, settings);
+        }
+    }
+
+    /// How the model at `path` is imported: the settings given for its file (a piece of a
+    /// file, `file.glb#mesh/2`, has its file's), else the default.
+    pub fn import_settings(&self, path: &Path) -> ImportSettings {
+        let (file, _) = SubAsset::split(path);
+        self.import_settings.get(&file).copied().unwrap_or_default()
+    }
+
+    /// Every model given settings other than the default, by path.
+    pub fn all_import_settings(&self) -> impl Iterator<Item = (&Path, &ImportSettings)> {
+        self.import_settings.iter().map(|(p, s)| (p.as_path(), s))
+    }
+
+    /// The id of the animation at `path` (`file.glb#animation/N`, or `file.glb` for all of
+    /// the file's animations), registering it if new.
+    pub fn animation(&mut self, path: &Path) -> AnimationId {
+        if let Some(id) = self.animation_ids.get(path) {
+            return *id;
+        }
+        let id = AnimationId(1 + self.animations.len() as u32);
+        self.animations.push(path.to_path_buf());
+        self.animation_ids.insert(path.to_path_buf(), id);
+        id
+    }
+
+    /// The id of the animation at `path`, if it was registered.
+    pub fn animation_id(&self, path: &Path) -> Option<AnimationId> {
+        self.animation_ids.get(path).copied()
+    }
+
+    /// The file (and piece) of an animation id.
+    pub fn animation_path(&self, id: AnimationId) -> Option<&Path> {
+        let index = id.0.checked_sub(1)?;
+        self.animations.get(index as usize).map(PathBuf::as_path)
+    }
+
+    /// Whether `id` is none or a registered animation.
+    pub fn knows_animation(&self, id: AnimationId) -> bool {
+        id == AnimationId::NONE || self.animation_path(id).is_some()
     }
 
     /// The id of the model at `path`, if it was registered.
@@ -139,6 +202,12 @@ mod tests {
         assert_eq!(
             registry.find_beside(&scenes, Path::new("gone.obj")),
             Path::new("gone.obj")
+        );
+        // One mesh of a glTF file: found by its file, the piece kept.
+        std::fs::write(scenes.join("city.glb"), "glTF").unwrap_or_else(|e| panic!("{e}"));
+        assert_eq!(
+            registry.find_beside(&scenes, Path::new("city.glb#mesh/3")),
+            PathBuf::from(format!("{}#mesh/3", scenes.join("city.glb").display()))
         );
         let _ = std::fs::remove_dir_all(&root);
     }

@@ -279,13 +279,16 @@ impl PhysicsSystem {
                 let path = assets
                     .mesh_path(mesh)
                     .ok_or_else(|| error(format!("mesh id {} is not a loaded model", mesh.0)))?;
-                let data =
-                    onyx_render::mesh::load_obj_geometry(&assets.resolve(path)).map_err(|e| {
-                        Event::Graphics(GraphicsEvent::AssetFailed {
-                            path: path.display().to_string(),
-                            message: format!("entity {entity} has no collider: {e}"),
-                        })
-                    })?;
+                let data = onyx_render::mesh::load_model_geometry(
+                    &assets.resolve(path),
+                    &assets.import_settings(path),
+                )
+                .map_err(|e| {
+                    Event::Graphics(GraphicsEvent::AssetFailed {
+                        path: path.display().to_string(),
+                        message: format!("entity {entity} has no collider: {e}"),
+                    })
+                })?;
                 let points: Vec<Vec3> = data
                     .vertices
                     .iter()

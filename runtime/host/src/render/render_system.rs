@@ -198,8 +198,9 @@ impl RenderSystem {
                     )],
                 },
                 (None, Some(path)) => {
+                    let settings = assets.import_settings(path);
                     let path = assets.resolve(path);
-                    let (model, problems) = self.renderer.load_model_or_fallback(&path);
+                    let (model, problems) = self.renderer.load_model_with(&path, &settings);
                     for problem in problems {
                         events.push(Event::Graphics(GraphicsEvent::AssetFailed {
                             path: path.display().to_string(),

@@ -66,6 +66,19 @@ pub enum SceneError {
         /// What is wrong.
         message: String,
     },
+    /// The import settings the scene gives a model are out of range.
+    #[error("scene `{}`, import settings of `{model}`: {message}", .path.display())]
+    InvalidImport {
+        /// The file.
+        path: PathBuf,
+        /// The model they are for.
+        model: String,
+        /// What is wrong.
+        message: String,
+    },
+    /// A glTF file opened as a scene could not be imported.
+    #[error(transparent)]
+    Gltf(#[from] super::GltfImportError),
     /// The world could not be serialized.
     #[error("could not serialize the scene: {message}")]
     Serialize {
@@ -89,7 +102,9 @@ impl SceneError {
             | SceneError::Parse { path, .. }
             | SceneError::UnsupportedVersion { path, .. }
             | SceneError::InvalidEntity { path, .. }
-            | SceneError::InvalidPhysics { path, .. } => Some(path),
+            | SceneError::InvalidPhysics { path, .. }
+            | SceneError::InvalidImport { path, .. } => Some(path),
+            SceneError::Gltf(error) => Some(error.path()),
             SceneError::Serialize { .. } => None,
         }
     }

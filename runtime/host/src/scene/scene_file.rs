@@ -46,6 +46,10 @@ pub struct SceneFile {
     /// How the scene is simulated (absent: the host's current settings).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub physics: Option<ScenePhysics>,
+    /// How model files are imported, by path as the entities write them (absent: as
+    /// they are).
+    #[serde(default, skip_serializing_if = "BTreeMap::is_empty")]
+    pub imports: BTreeMap<String, super::ImportSettingsFile>,
     /// The entities, in order.
     #[serde(default)]
     pub entities: Vec<SceneEntity>,

@@ -30,12 +30,30 @@ pub fn parse_scene(text: &str, path: &Path) -> Result<SceneFile, SceneError> {
                 message,
             })?;
     }
+    for (model, settings) in &scene.imports {
+        settings
+            .settings()
+            .map_err(|message| SceneError::InvalidImport {
+                path: path.to_path_buf(),
+                model: model.clone(),
+                message,
+            })?;
+    }
     check_hierarchy(&scene, path)?;
     Ok(scene)
 }
 
-/// Reads and parses the scene at `path`.
+/// Reads and parses the scene at `path`: a scene file, or a glTF file (`.gltf`, `.glb`)
+/// whose node tree becomes the scene, with a framing camera and a sun when it has none (each
+/// feature the import leaves out logged once).
 pub fn read_scene(path: &Path) -> Result<SceneFile, SceneError> {
+    if super::is_gltf_scene(path) {
+        let imported = super::import_gltf_scene(path, true)?;
+        for warning in &imported.warnings {
+            tracing::warn!("`{}`: {warning}", path.display());
+        }
+        return Ok(imported.scene);
+    }
     let text = std::fs::read_to_string(path).map_err(|cause| SceneError::Io {
         action: "read",
         path: path.to_path_buf(),

@@ -55,6 +55,16 @@ pub fn scene_from_world(world: &WorldState) -> SceneFile {
     SceneFile {
         version: SCENE_FORMAT_VERSION,
         physics: None,
+        imports: world
+            .assets
+            .all_import_settings()
+            .map(|(path, settings)| {
+                (
+                    path.display().to_string(),
+                    super::ImportSettingsFile::from_settings(settings),
+                )
+            })
+            .collect(),
         entities,
     }
 }

@@ -5,7 +5,7 @@ use std::collections::HashMap;
 use std::path::Path;
 
 use base64::Engine as _;
-use onyx_plugin_api::{BlobFormat, BuiltinValue, Entity, FileRefs, MeshId, TextureId};
+use onyx_plugin_api::{AnimationId, BlobFormat, BuiltinValue, Entity, FileRefs, MeshId, TextureId};
 
 use super::scene_read::ids_of;
 use super::{SceneComponent, SceneEntity, SceneError, SceneFile};
@@ -30,6 +30,11 @@ impl FileRefs for SpawnRefs<'_> {
     fn texture(&mut self, path: &str) -> TextureId {
         let path = self.assets.find_beside(self.scene_dir, Path::new(path));
         self.assets.texture(&path)
+    }
+
+    fn animation(&mut self, path: &str) -> AnimationId {
+        let path = self.assets.find_beside(self.scene_dir, Path::new(path));
+        self.assets.animation(&path)
     }
 
     fn entity(&self, file_id: u64) -> Option<Entity> {
@@ -68,6 +73,16 @@ pub fn spawn_scene(
     scene: &SceneFile,
     path: &Path,
 ) -> Result<usize, SceneError> {
+    spawn_scene_entities(ecs, assets, scene, path).map(|spawned| spawned.len())
+}
+
+/// [`spawn_scene`], returning the entities spawned in file order.
+pub fn spawn_scene_entities(
+    ecs: &mut hecs::World,
+    assets: &mut AssetRegistry,
+    scene: &SceneFile,
+    path: &Path,
+) -> Result<Vec<hecs::Entity>, SceneError> {
     let spawned: Vec<hecs::Entity> = scene.entities.iter().map(|_| ecs.spawn(())).collect();
     let by_id: HashMap<u64, hecs::Entity> = ids_of(scene)
         .into_iter()
@@ -83,6 +98,14 @@ pub fn spawn_scene(
             return Err(error);
         }
     };
+    // The models these settings are for load when first drawn or collided, after this.
+    let scene_dir = path.parent().unwrap_or(Path::new(""));
+    for (model, settings) in &scene.imports {
+        if let Ok(settings) = settings.settings() {
+            let found = assets.find_beside(scene_dir, Path::new(model));
+            assets.set_import_settings(&found, settings);
+        }
+    }
     let mut builder = hecs::EntityBuilder::new();
     for (e, (builtins, plugin)) in spawned.iter().zip(prepared) {
         for value in &builtins {
@@ -93,7 +116,7 @@ pub fn spawn_scene(
         }
         let _ = ecs.insert(*e, builder.build());
     }
-    Ok(scene.entities.len())
+    Ok(spawned)
 }
 
 type Prepared = Vec<(Vec<BuiltinValue>, PluginComponents)>;

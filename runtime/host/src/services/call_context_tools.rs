@@ -92,7 +92,9 @@ impl ToolServices for CallContext<'_> {
                     self.state.clock.set_fixed_hz(physics.fixed_hz());
                     self.state.physics.set_scene_physics(physics);
                 }
-                self.state.tools.scene_path = Some(path.to_path_buf());
+                // A glTF file opened as a scene is not where the scene is saved to.
+                self.state.tools.scene_path =
+                    (!scene::is_gltf_scene(path)).then(|| path.to_path_buf());
                 Ok(())
             }
             Err(error) => {
@@ -205,5 +207,39 @@ impl ToolServices for CallContext<'_> {
         let state = &mut *self.state;
         let e = state.world.entity(entity)?;
         crate::tools::local_bounds(&state.world, &mut state.tools.mesh_bounds, e)
+    }
+
+    fn import_gltf(&mut self, path: &str) -> Result<Entity, CtxError> {
+        let path = Path::new(path);
+        let world = &mut self.state.world;
+        let spawned = scene::import_gltf_scene(path, false)
+            .map_err(SceneError::from)
+            .and_then(|imported| {
+                for warning in &imported.warnings {
+                    tracing::warn!("`{}`: {warning}", path.display());
+                }
+                scene::spawn_scene_entities(
+                    &mut world.ecs,
+                    &mut world.assets,
+                    &imported.scene,
+                    path,
+                )
+            });
+        match spawned {
+            Ok(spawned) => {
+                world.hierarchy.invalidate();
+                tracing::info!(path = %path.display(), entities = spawned.len(), plugin = self.plugin, "imported glTF");
+                spawned
+                    .first()
+                    .map(|root| to_api(*root))
+                    .ok_or_else(|| CtxError::Invalid {
+                        message: format!("`{}` gave no entity to import", path.display()),
+                    })
+            }
+            Err(error) => {
+                tracing::error!("{error}");
+                Err(scene_error(error))
+            }
+        }
     }
 }

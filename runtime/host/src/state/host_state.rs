@@ -4,6 +4,7 @@
 use onyx_plugin_api::{Entity, EntityTransform, Event};
 
 use super::FrameIo;
+use crate::animation::AnimationSystem;
 use crate::assets::AssetRegistry;
 use crate::clock::FixedClock;
 use crate::physics::PhysicsSystem;
@@ -24,6 +25,8 @@ pub struct HostState {
     pub clock: FixedClock,
     /// Rigid-body physics.
     pub physics: PhysicsSystem,
+    /// Node animations playing.
+    pub animation: AnimationSystem,
     /// The chosen camera, the orbit camera, the view switches.
     pub view: ViewState,
     /// What the tool services keep (diagnostics, play mode, scripts, scene path).
@@ -47,6 +50,7 @@ impl HostState {
             io: FrameIo::default(),
             clock,
             physics: PhysicsSystem::default(),
+            animation: AnimationSystem::default(),
             view: ViewState::default(),
             tools: ToolState::default(),
             buffers: CallBuffers::default(),

@@ -78,7 +78,11 @@ impl MeshBounds {
             .entry(mesh)
             .or_insert_with(|| {
                 let path = assets.mesh_path(mesh)?;
-                let data = onyx_render::mesh::load_obj_geometry(&assets.resolve(path)).ok()?;
+                let data = onyx_render::mesh::load_model_geometry(
+                    &assets.resolve(path),
+                    &assets.import_settings(path),
+                )
+                .ok()?;
                 let mut points = data.vertices.iter().map(|v| Vec3::from(v.position));
                 let first = points.next()?;
                 let (min, max) = points.fold((first, first), |(lo, hi), p| (lo.min(p), hi.max(p)));

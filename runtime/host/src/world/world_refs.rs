@@ -3,7 +3,7 @@
 
 use std::collections::HashMap;
 
-use onyx_plugin_api::{Entity, HostRefs, MeshId, TextureId};
+use onyx_plugin_api::{AnimationId, Entity, HostRefs, MeshId, TextureId};
 
 use crate::assets::AssetRegistry;
 use crate::entity_id::to_hecs;
@@ -32,6 +32,16 @@ impl HostRefs for WorldRefs<'_> {
     fn texture_file(&self, texture: TextureId) -> Option<String> {
         self.assets
             .texture_path(texture)
+            .map(|p| p.display().to_string())
+    }
+
+    fn knows_animation(&self, animation: AnimationId) -> bool {
+        self.assets.knows_animation(animation)
+    }
+
+    fn animation_file(&self, animation: AnimationId) -> Option<String> {
+        self.assets
+            .animation_path(animation)
             .map(|p| p.display().to_string())
     }
 

@@ -8,6 +8,8 @@
 //! - `model_source`: [`ModelSource`] / [`PartSource`], a model file read and decoded on the
 //!   CPU (any thread), ready to upload.
 //! - `model_loader`: the file's format by extension.
+//! - `sub_asset`: [`SubAsset`], one piece of a model file named after a `#`
+//!   (`file.glb#mesh/3`).
 //! - `obj/`: OBJ + MTL, read tolerantly.
 //! - `gltf/`: glTF 2.0 and GLB through the `gltf` crate.
 //! - `import_settings`, `up_axis`, `normal_mode`: [`ImportSettings`] (scale, [`UpAxis`],
@@ -33,10 +35,12 @@ mod model_source;
 mod normal_mode;
 mod obj;
 mod procedural;
+mod sub_asset;
 mod up_axis;
 mod vertex;
 
 pub use gltf::catch_gltf_panics;
+pub use gltf::load_gltf_buffers;
 pub use import_settings::ImportSettings;
 pub use invalid_mesh_error::InvalidMeshError;
 pub(crate) use mesh_cache::{cache_key, MeshCache};
@@ -48,6 +52,7 @@ pub use model_loader::is_gltf;
 pub(crate) use model_loader::load_model_source;
 pub use model_source::{ModelSource, PartSource};
 pub use normal_mode::{NormalMode, DEFAULT_CREASE_DEGREES};
+pub use sub_asset::SubAsset;
 pub use up_axis::UpAxis;
 pub use vertex::Vertex;
 

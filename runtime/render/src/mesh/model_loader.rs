@@ -5,13 +5,18 @@ use std::path::Path;
 use super::import_settings::ImportSettings;
 use super::model_load_error::ModelLoadError;
 use super::model_source::ModelSource;
+use super::sub_asset::SubAsset;
 
 /// Reads the model at `path` (images not decoded): `.gltf` and `.glb` through the glTF
-/// reader; anything else as OBJ (a file that is not names the line that is not OBJ).
+/// reader, one mesh of one when the path names it ([`SubAsset::Mesh`], `file.glb#mesh/N`);
+/// anything else as OBJ (a file that is not names the line that is not OBJ).
 pub(crate) fn load_model_source(
     path: &Path,
     settings: &ImportSettings,
 ) -> Result<ModelSource, ModelLoadError> {
+    if let (file, Some(SubAsset::Mesh(index))) = SubAsset::split(path) {
+        return super::gltf::load_gltf_mesh_source(&file, index, settings);
+    }
     if is_gltf(path) {
         super::gltf::load_gltf_source(path, settings)
     } else {

@@ -572,6 +572,47 @@ fn import_obj_makes_an_entity_showing_the_model() {
 }
 
 #[test]
+fn import_gltf_brings_the_node_tree_under_one_new_entity_and_undoes_in_one_step() {
+    let samples = repo_file("../shared/fixtures/gltf");
+    if !samples.is_dir() {
+        eprintln!("skipped: {} is absent", samples.display());
+        return;
+    }
+    let dir = tempfile::tempdir().unwrap();
+    let mut host = editor_host(dir.path());
+    let before = host.world().len();
+    let model = samples.join("BoxAnimated/glTF-Binary/BoxAnimated.glb");
+    choose_file(&mut host, "Create", "Import glTF…", &model, "Import");
+    host.step(2);
+    // The root and the file's four nodes: node 3 and node 0 → node 1 → node 2.
+    assert_eq!(host.world().len(), before + 5, "{:?}", names(&host));
+    let (root, _) = host
+        .find::<Transform>("BoxAnimated")
+        .expect("a root named after the file");
+    let (chain, parent) = host
+        .find::<onyx_plugin_api::Parent>("node 0")
+        .expect("node 0 under the root");
+    assert_eq!(parent.0, root);
+    let (_, parent) = host
+        .find::<onyx_plugin_api::Parent>("node 1")
+        .expect("node 1 under node 0");
+    assert_eq!(parent.0, chain);
+    let (inner, _) = host.find::<Transform>("node 2").expect("node 2");
+    assert!(
+        host.get::<MeshRenderer>(inner).is_some(),
+        "node 2 shows its mesh"
+    );
+    assert!(
+        host.get::<onyx_plugin_api::Animator>(root).is_some(),
+        "the root plays the file's animation"
+    );
+    // One undo takes the whole tree away.
+    menu(&mut host, "Edit", "Undo");
+    host.step(1);
+    assert_eq!(host.world().len(), before, "{:?}", names(&host));
+}
+
+#[test]
 fn plugins_menu_loads_a_library_and_lists_it_running() {
     let dir = tempfile::tempdir().unwrap();
     let mut host = editor_host(dir.path());

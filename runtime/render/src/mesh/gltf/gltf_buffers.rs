@@ -8,7 +8,7 @@ use crate::asset_io::{read_asset_file, resolve_referenced_path, MAX_ASSET_FILE_B
 
 /// Every buffer of `document`, in index order: the GLB `BIN` chunk, a `data:` URI or a file
 /// beside the model. Errors are sentences naming the buffer.
-pub(crate) fn load_buffers(
+pub fn load_buffers(
     document: &gltf::Document,
     blob: Option<&[u8]>,
     folder: &Path,

@@ -2,6 +2,8 @@
 //!
 //! - `gltf_loader`: the file into a [`crate::ModelSource`]: the default scene's nodes
 //!   walked, one part per primitive at its node's world transform (the entry point).
+//! - `gltf_mesh_loader`: one mesh of the file (`file.glb#mesh/N`) into a
+//!   [`crate::ModelSource`], in the mesh's own space (a scene entity draws each mesh).
 //! - `gltf_buffers`: buffer and image bytes (GLB chunk, `data:` URIs, files beside the
 //!   model — regular files only).
 //! - `gltf_primitive`: a primitive's accessors (sparse ones included) into a [`crate::MeshData`].
@@ -14,9 +16,11 @@ mod crate_panics;
 mod gltf_buffers;
 mod gltf_loader;
 mod gltf_material;
+mod gltf_mesh_loader;
 mod gltf_primitive;
 
 pub use crate_panics::catch_gltf_panics;
+pub use gltf_buffers::load_buffers as load_gltf_buffers;
 
 use std::path::Path;
 
@@ -30,4 +34,15 @@ pub(crate) fn load_gltf_source(
     settings: &ImportSettings,
 ) -> Result<ModelSource, ModelLoadError> {
     catch_gltf_panics(path, || gltf_loader::load_gltf_source(path, settings))
+}
+
+/// [`gltf_mesh_loader::load_gltf_mesh_source`] behind [`catch_gltf_panics`].
+pub(crate) fn load_gltf_mesh_source(
+    path: &Path,
+    mesh_index: usize,
+    settings: &ImportSettings,
+) -> Result<ModelSource, ModelLoadError> {
+    catch_gltf_panics(path, || {
+        gltf_mesh_loader::load_gltf_mesh_source(path, mesh_index, settings)
+    })
 }
