@@ -9,10 +9,11 @@ use onyx_physics::{
 };
 use onyx_plugin_api::host::PhysicsCommand;
 use onyx_plugin_api::{
-    BodyKind, Collider, ColliderShape, Entity, Event, GraphicsEvent, PhysicsEvent, PlatformEvent,
-    RayHit, RigidBody, Transform,
+    BodyKind, Collider, ColliderShape, Entity, Event, GraphicsEvent, Name, PhysicsEvent,
+    PlatformEvent, RayHit, RigidBody, Transform,
 };
 
+use super::step_reports::{Named, StepReports};
 use super::ScenePhysics;
 use crate::assets::AssetRegistry;
 use crate::entity_id::{to_api, to_hecs};
@@ -59,6 +60,8 @@ pub struct PhysicsSystem {
     scene_physics: Option<ScenePhysics>,
     /// Counts syncs; a link not stamped with the current one has lost its entity.
     sync_epoch: u64,
+    /// What the steps reported that was already logged.
+    reports: StepReports,
 }
 
 impl std::fmt::Debug for PhysicsSystem {
@@ -128,6 +131,7 @@ impl PhysicsSystem {
             commands: Vec::new(),
             scene_physics: None,
             sync_epoch: 0,
+            reports: StepReports::default(),
         }
     }
 
@@ -231,6 +235,14 @@ impl PhysicsSystem {
                     ),
                 }));
             }
+        }
+        let named = |h: BodyHandle| {
+            let entity = *self.entity_of.get(&h)?;
+            let name = world.ecs.get::<&Name>(entity).ok().map(|n| n.0.clone());
+            Some(Named { entity, name })
+        };
+        for line in self.reports.sentences(&output, named) {
+            tracing::warn!("{line}");
         }
         let entity = |h: &BodyHandle| self.entity_of.get(h).or_else(|| self.departed.get(h));
         for contact in &output.events {
