@@ -71,6 +71,10 @@ pub enum SceneOpFfi {
     Open,
     /// Save the world to the file.
     Save,
+    /// Save the world to the file without making it the world's file.
+    SaveCopy,
+    /// Name the file the world belongs to (empty: none).
+    Rename,
 }
 
 /// Which report `host_report` returns (as JSON).
@@ -85,6 +89,14 @@ pub enum ReportFfi {
     LogLines,
     /// `Vec<ScriptInfo>`.
     Scripts,
+}
+
+/// An axis-aligned box in an entity's frame, metres.
+#[repr(C)]
+#[derive(StableAbi, Clone, Copy, Debug, PartialEq)]
+pub struct BoundsFfi {
+    pub min: [f32; 3],
+    pub max: [f32; 3],
 }
 
 /// A pixel of a view and the view's size, both in pixels.

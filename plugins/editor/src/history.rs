@@ -48,30 +48,78 @@ impl Command {
     }
 }
 
-/// Undo and redo stacks. Edits are applied by the caller, then recorded here.
-#[derive(Debug, Default)]
+/// Undo and redo stacks. Edits are applied by the caller, then recorded here. It also knows
+/// whether the scene has edits since it was opened or saved ([`History::is_modified`]).
+#[derive(Debug)]
 pub struct History {
     undo: Vec<Command>,
     redo: Vec<Command>,
+    /// The depth of the undo stack when the scene was opened or last saved; `None` once that
+    /// state cannot come back by undo or redo (edited over, or dropped past the limit).
+    saved_at: Option<usize>,
     /// Frame of the last [`History::record_merged`], to merge a drag into one edit.
     last_merge_frame: Option<u64>,
     /// Entities recreated (old handle, new handle) by the edit being applied: the rest of a
     /// group is pointed at the new ones before it runs.
     recreated: Vec<(Entity, Entity)>,
+    /// Counts every change to the stacks: the world the editor shows changed when it did
+    /// (what autosave compares against).
+    revision: u64,
 }
 
 /// Most edits kept.
 const LIMIT: usize = 500;
 
+impl Default for History {
+    fn default() -> Self {
+        Self {
+            undo: Vec::new(),
+            redo: Vec::new(),
+            saved_at: Some(0),
+            last_merge_frame: None,
+            recreated: Vec::new(),
+            revision: 0,
+        }
+    }
+}
+
 impl History {
     /// Records an edit already applied.
     pub fn record(&mut self, command: Command) {
+        if self.saved_at.is_some_and(|depth| depth > self.undo.len()) {
+            self.saved_at = None; // the saved state was in the redo stack, dropped now
+        }
         self.redo.clear();
         self.undo.push(command);
+        self.revision += 1;
         if self.undo.len() > LIMIT {
             self.undo.remove(0);
+            self.saved_at = self.saved_at.and_then(|depth| depth.checked_sub(1));
         }
         self.last_merge_frame = None;
+    }
+
+    /// Whether the scene has edits since it was opened or last saved ([`History::mark_saved`]):
+    /// undoing back to that point makes it unmodified again. Edits made while playing are
+    /// not edits (Stop puts them back).
+    pub fn is_modified(&self) -> bool {
+        self.saved_at != Some(self.undo.len())
+    }
+
+    /// The scene was just saved: it is unmodified as it stands.
+    pub fn mark_saved(&mut self) {
+        self.saved_at = Some(self.undo.len());
+    }
+
+    /// The world holds edits no file has (a scene recovered from an autosaved copy):
+    /// modified until saved, whatever is undone.
+    pub fn mark_modified(&mut self) {
+        self.saved_at = None;
+    }
+
+    /// A number that changes whenever an edit is recorded, merged, undone or redone.
+    pub fn revision(&self) -> u64 {
+        self.revision
     }
 
     /// Records a component change, merged into the previous edit when that changed the same
@@ -96,6 +144,10 @@ impl History {
             if entity == e2 && key == k2 {
                 *new = n2.clone();
                 self.last_merge_frame = Some(frame);
+                self.revision += 1;
+                if self.saved_at == Some(self.undo.len()) {
+                    self.saved_at = None; // the saved edit itself changed
+                }
                 return;
             }
         }
@@ -126,6 +178,7 @@ impl History {
         self.last_merge_frame = None;
         let done = self.apply(ctx, command, true);
         self.recreated.clear();
+        self.revision += 1;
         self.redo.push(done?);
         Ok(())
     }
@@ -138,6 +191,7 @@ impl History {
         self.last_merge_frame = None;
         let done = self.apply(ctx, command, false);
         self.recreated.clear();
+        self.revision += 1;
         self.undo.push(done?);
         Ok(())
     }
@@ -230,11 +284,13 @@ impl History {
         }
     }
 
-    /// Forgets every edit (a new or opened scene).
+    /// Forgets every edit (a new or opened scene, unmodified as it stands).
     pub fn clear(&mut self) {
         self.undo.clear();
         self.redo.clear();
+        self.saved_at = Some(0);
         self.last_merge_frame = None;
+        self.revision += 1;
     }
 }
 

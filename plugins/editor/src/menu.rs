@@ -8,6 +8,7 @@ use crate::create::Primitive;
 use crate::file_dialog::{FileDialog, FilePurpose};
 use crate::panel::{self, Panel};
 use crate::state::EditorState;
+use crate::unsaved_changes::{self, Discarding};
 
 /// Draws the menu bar and the play toolbar.
 pub fn menu_bar(
@@ -25,29 +26,55 @@ pub fn menu_bar(
         ui.separator();
         play_toolbar(ui, ctx);
         ui.separator();
-        let scene = ctx.scene_path().unwrap_or_else(|| "untitled".to_owned());
-        ui.weak(scene);
+        title(ui, ctx, state);
         if !state.status.is_empty() {
             ui.colored_label(egui::Color32::from_rgb(230, 160, 60), &state.status);
         }
     });
 }
 
+/// The editor's title: the scene's file name (the whole path on hover), or "untitled",
+/// then " *" while it has edits that are not saved.
+fn title(ui: &mut egui::Ui, ctx: &mut Ctx, state: &EditorState) {
+    let path = ctx.scene_path();
+    let name = path
+        .as_deref()
+        .map(std::path::Path::new)
+        .and_then(std::path::Path::file_name)
+        .map(|n| n.to_string_lossy().into_owned())
+        .unwrap_or_else(|| "untitled".to_owned());
+    let marker = if state.history.is_modified() {
+        " *"
+    } else {
+        ""
+    };
+    let shown = ui.weak(format!("{name}{marker}"));
+    if let Some(path) = path {
+        shown.on_hover_text(path);
+    }
+}
+
 fn file_menu(ui: &mut egui::Ui, ctx: &mut Ctx, state: &mut EditorState) {
     if ui.button("New").clicked() {
-        new_scene(ctx, state);
+        unsaved_changes::run_or_ask(ctx, state, Discarding::New);
     }
     if ui.button("Open…").clicked() {
         state.file_dialog = Some(FileDialog::new(FilePurpose::Open, &scene_dir(ctx)));
     }
     if ui.button("Save").clicked() {
-        match ctx.scene_path() {
-            Some(path) => save_scene(ctx, state, &path),
-            None => state.file_dialog = Some(FileDialog::new(FilePurpose::SaveAs, &scene_dir(ctx))),
-        }
+        save(ctx, state);
     }
     if ui.button("Save As…").clicked() {
-        state.file_dialog = Some(FileDialog::new(FilePurpose::SaveAs, &scene_dir(ctx)));
+        // In the scene's folder with its name filled in, else in the folder scenes live in.
+        let start = ctx
+            .scene_path()
+            .map(std::path::PathBuf::from)
+            .filter(|p| {
+                p.parent()
+                    .is_some_and(|d| d.as_os_str().is_empty() || d.is_dir())
+            })
+            .unwrap_or_else(|| scene_dir(ctx));
+        state.file_dialog = Some(FileDialog::new(FilePurpose::SaveAs, &start));
     }
     ui.menu_button("Recent", |ui| {
         if state.recent.is_empty() {
@@ -55,18 +82,18 @@ fn file_menu(ui: &mut egui::Ui, ctx: &mut Ctx, state: &mut EditorState) {
         }
         for path in state.recent.clone() {
             if ui.button(&path).clicked() {
-                open_scene(ctx, state, &path);
+                unsaved_changes::run_or_ask(ctx, state, Discarding::Open(path));
             }
         }
     });
     ui.separator();
     if ui.button("Quit").clicked() {
-        ctx.request_quit();
+        unsaved_changes::run_or_ask(ctx, state, Discarding::Quit);
     }
 }
 
 /// The folder of the current scene file, else `assets/scenes` when it exists, else `.`.
-fn scene_dir(ctx: &mut Ctx) -> std::path::PathBuf {
+pub fn scene_dir(ctx: &mut Ctx) -> std::path::PathBuf {
     let from_scene = ctx.scene_path().and_then(|p| {
         std::path::Path::new(&p)
             .parent()
@@ -83,23 +110,28 @@ fn scene_dir(ctx: &mut Ctx) -> std::path::PathBuf {
     })
 }
 
-/// Replaces the world with an empty one.
+/// Replaces the world with an empty one, without asking (see
+/// [`unsaved_changes::run_or_ask`]).
 pub fn new_scene(ctx: &mut Ctx, state: &mut EditorState) {
     match ctx.new_scene() {
         Ok(()) => {
+            state.recovery.forget(ctx);
             state.selection.clear();
             state.history.clear();
+            state.viewport.forget_camera();
         }
         Err(e) => state.report(ctx, "cannot start a new scene", e),
     }
 }
 
-/// Opens a scene file.
+/// Opens a scene file, without asking (see [`unsaved_changes::run_or_ask`]).
 pub fn open_scene(ctx: &mut Ctx, state: &mut EditorState, path: &str) {
     match ctx.open_scene(path) {
         Ok(()) => {
+            state.recovery.forget(ctx);
             state.selection.clear();
             state.history.clear();
+            state.viewport.forget_camera();
             state.remember_scene(path);
             state.status.clear();
         }
@@ -107,10 +139,21 @@ pub fn open_scene(ctx: &mut Ctx, state: &mut EditorState, path: &str) {
     }
 }
 
+/// File ▸ Save and Ctrl+S: to the scene's file (the one opened, saved, or given with
+/// `--scene`), or through Save As for a scene that has none yet.
+pub fn save(ctx: &mut Ctx, state: &mut EditorState) {
+    match ctx.scene_path() {
+        Some(path) => save_scene(ctx, state, &path),
+        None => state.file_dialog = Some(FileDialog::new(FilePurpose::SaveAs, &scene_dir(ctx))),
+    }
+}
+
 /// Saves the world to a scene file.
 pub fn save_scene(ctx: &mut Ctx, state: &mut EditorState, path: &str) {
     match ctx.save_scene(path) {
         Ok(()) => {
+            state.history.mark_saved();
+            state.recovery.forget(ctx);
             state.remember_scene(path);
             state.status.clear();
         }

@@ -101,6 +101,7 @@ impl Sealed for OffscreenTarget {
         gpu: &GpuContext,
         samples: u32,
     ) -> Result<Option<TargetFrame>, RenderError> {
+        let overlay = self.encoded_view();
         let attachments = Attachments::ensure(
             &mut self.attachments,
             gpu.device(),
@@ -110,6 +111,8 @@ impl Sealed for OffscreenTarget {
         );
         Ok(Some(TargetFrame {
             color: self.view.clone(),
+            overlay,
+            overlay_format: OFFSCREEN_FORMAT.remove_srgb_suffix(),
             depth: attachments.depth.clone(),
             msaa: attachments.msaa.clone(),
             format: OFFSCREEN_FORMAT,

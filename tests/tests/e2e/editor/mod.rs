@@ -15,13 +15,21 @@ fn editor_host(dir: &Path) -> HeadlessHost {
     editor_host_with(dir, HostConfig::default())
 }
 
-/// [`editor_host`] with more settings in `config`.
+/// [`editor_host`] with more settings in `config`. The layout and the recovery copies
+/// live in `dir` (the defaults, under `.onyx/` in the working directory, would be shared by
+/// every test).
 fn editor_host_with(dir: &Path, config: HostConfig) -> HeadlessHost {
-    let config = config.setting(
-        "editor",
-        "layout",
-        dir.join("layout.json").display().to_string(),
-    );
+    let config = config
+        .setting(
+            "editor",
+            "layout",
+            dir.join("layout.json").display().to_string(),
+        )
+        .setting(
+            "editor",
+            "recovery",
+            dir.join("recovery").display().to_string(),
+        );
     let mut host = HeadlessHost::with_config(config);
     host.load_plugin_file(&plugin_library("editor"))
         .expect("the editor loads");
@@ -439,8 +447,10 @@ fn the_editor_matches_its_golden_image() {
     assert_golden("editor", &image);
 }
 
+/// The Console of a fresh editor opened on a yellow egui-wgpu warning about an sRGB
+/// framebuffer: a clean start must log no warning at all.
 #[test]
-fn a_windowed_editor_run_saves_a_screenshot() {
+fn a_windowed_editor_starts_without_a_warning_and_saves_a_screenshot() {
     let dir = tempfile::tempdir().unwrap();
     let png = dir.path().join("editor.png");
     let layout: PathBuf = dir.path().join("layout.json");
@@ -463,6 +473,12 @@ fn a_windowed_editor_run_saves_a_screenshot() {
         .expect("onyx runs");
     let err = String::from_utf8_lossy(&out.stderr);
     assert!(out.status.success(), "{err}");
+    // `tracing`'s warnings (Mesa's own lines start `WARNING:` and are not ours).
+    let warnings: Vec<&str> = err
+        .lines()
+        .filter(|l| l.contains("WARN") && !l.contains("WARNING"))
+        .collect();
+    assert!(warnings.is_empty(), "a clean start warned: {warnings:#?}");
     let image = onyx_render::image::open(&png).unwrap().to_rgba8();
     assert_eq!(image.dimensions(), (640, 360));
     let first = image.get_pixel(0, 0);
@@ -734,4 +750,7 @@ fn the_viewport_camera_flies_zooms_and_frames_the_selection() {
     );
 }
 
+mod files;
+mod nothing_lost;
 mod scene_graph;
+mod viewport;
