@@ -163,6 +163,10 @@ scene_physics! {
     time_to_sleep: f32,
     /// Global switch for continuous collision detection (`PhysicsSettings::ccd_enabled`).
     ccd_enabled: bool,
+    /// Joint stiffness, Hz (`PhysicsSettings::joint_hertz`).
+    joint_hertz: f32,
+    /// Joint damping ratio (`PhysicsSettings::joint_damping_ratio`).
+    joint_damping_ratio: f32,
     /// Contact normal `y` from which a body counts as grounded
     /// (`PhysicsSettings::grounded_min_normal_y`).
     grounded_min_normal_y: f32,
@@ -299,6 +303,8 @@ mod tests {
             sleep_angular_threshold: 0.02,
             time_to_sleep: 2.0,
             ccd_enabled: false,
+            joint_hertz: 45.0,
+            joint_damping_ratio: 1.5,
             grounded_min_normal_y: 0.5,
         };
         let scene = ScenePhysics::explicit(PhysicsPreset::Fast, &odd);
@@ -315,8 +321,8 @@ mod tests {
         let text = ron::to_string(&scene).unwrap();
         let read: ScenePhysics = ron::from_str(&text).unwrap();
         assert_eq!(read, scene);
-        // 25 settings fields: `dt` is written as `fixed_hz`.
-        assert_eq!(SCENE_PHYSICS_FIELDS.len(), 25);
+        // 27 settings fields: `dt` is written as `fixed_hz`.
+        assert_eq!(SCENE_PHYSICS_FIELDS.len(), 27);
         for field in SCENE_PHYSICS_FIELDS {
             assert!(text.contains(&format!("{field}:")), "{field} not in {text}");
         }

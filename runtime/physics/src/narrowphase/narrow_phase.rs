@@ -175,6 +175,29 @@ impl NarrowPhase {
         }
     }
 
+    /// Removes every pair between bodies `a` and `b` (a joint now keeps them from colliding),
+    /// reporting `Ended` for touching ones.
+    pub(crate) fn remove_pairs_between(
+        &mut self,
+        a: BodyHandle,
+        b: BodyHandle,
+        bodies: &BodySet,
+        events: &mut Vec<ContactEvent>,
+    ) {
+        let mut i = 0;
+        while i < self.pairs.len() {
+            let p = &self.pairs[i];
+            if (p.body_a == a && p.body_b == b) || (p.body_a == b && p.body_b == a) {
+                let p = self.remove_at(i);
+                if p.touching {
+                    events.push(make_event(ContactEventKind::Ended, &p, bodies, 0.0));
+                }
+            } else {
+                i += 1;
+            }
+        }
+    }
+
     /// Clears the manifolds of every pair of body `h` (quarantined), reporting `Ended` for
     /// touching ones.
     pub(crate) fn end_contacts_of(

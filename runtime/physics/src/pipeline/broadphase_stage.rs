@@ -21,7 +21,11 @@ impl PhysicsWorld {
             ) else {
                 continue;
             };
-            if ca.parent == cb.parent {
+            if ca.parent == cb.parent
+                || self
+                    .joints
+                    .keeps_apart(ca.parent.index(), cb.parent.index())
+            {
                 continue;
             }
             let (Some(ba), Some(bb)) = (self.bodies.get(ca.parent), self.bodies.get(cb.parent))
