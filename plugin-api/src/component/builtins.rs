@@ -28,6 +28,7 @@ macro_rules! for_each_builtin {
             Light => light: $crate::Light as $crate::Light,
             RigidBody => rigid_body: $crate::RigidBody as $crate::RigidBody,
             Collider => collider: $crate::Collider as $crate::Collider,
+            Joint => joint: $crate::Joint as $crate::Joint,
         }
     };
 }
@@ -212,6 +213,7 @@ impl BuiltinValue {
     }
 
     /// The value as a `T`, or itself back when it is another component.
+    #[allow(clippy::result_large_err)] // See `Listed::from_value`.
     pub fn into_inner<T: Builtin>(self) -> Result<T, Self> {
         T::from_value(self)
     }

@@ -10,7 +10,8 @@
 //!   [`TextureId`]), `shading_mode.rs`, `camera.rs`, `light.rs`: what the renderer draws.
 //! - `debug_line.rs`: [`DebugLine`], one frame's debug drawing.
 //! - `rigid_body.rs` ([`RigidBody`], [`BodyKind`], [`LockedAxes`]), `collider.rs`
-//!   ([`Collider`], [`ColliderShape`]), `ray_hit.rs` ([`RayHit`]): physics.
+//!   ([`Collider`], [`ColliderShape`]), `joint.rs` ([`Joint`], [`JointTarget`]), `ray_hit.rs`
+//!   ([`RayHit`]): physics.
 //! - `component.rs`: [`Component`], a plugin's own serde component.
 //! - `component_type.rs`: [`ComponentType`], what `Ctx::get`/`set`/`remove` accept.
 //! - `bundle.rs`: [`Bundle`], components spawned together.
@@ -28,6 +29,7 @@ pub(crate) mod component_type;
 mod debug_line;
 mod entity_transform;
 mod global_transform;
+mod joint;
 mod light;
 mod mesh_id;
 mod mesh_renderer;
@@ -49,6 +51,7 @@ pub use component_type::ComponentType;
 pub use debug_line::DebugLine;
 pub use entity_transform::EntityTransform;
 pub use global_transform::GlobalTransform;
+pub use joint::{Joint, JointFile, JointKind, JointMotor, JointTarget};
 pub use light::Light;
 pub use mesh_id::{MeshId, TextureId};
 pub use mesh_renderer::{Material, MeshRenderer, MeshRendererFile};

@@ -12,6 +12,7 @@ mod gui;
 mod hardening;
 mod hierarchy;
 mod host_services;
+mod joints;
 mod lifecycle;
 mod loading;
 mod native_failures;

@@ -9,10 +9,11 @@ use onyx_physics::{
 };
 use onyx_plugin_api::host::PhysicsCommand;
 use onyx_plugin_api::{
-    BodyKind, Collider, ColliderShape, Entity, Event, GraphicsEvent, Name, PhysicsEvent,
+    BodyKind, Collider, ColliderShape, Entity, Event, GraphicsEvent, Joint, Name, PhysicsEvent,
     PlatformEvent, RayHit, RigidBody, Transform,
 };
 
+use super::joint_links::JointLinks;
 use super::step_reports::{Named, StepReports};
 use super::ScenePhysics;
 use crate::assets::AssetRegistry;
@@ -62,6 +63,8 @@ pub struct PhysicsSystem {
     sync_epoch: u64,
     /// What the steps reported that was already logged.
     reports: StepReports,
+    /// The physics joints of `Joint` components.
+    joints: JointLinks,
 }
 
 impl std::fmt::Debug for PhysicsSystem {
@@ -132,6 +135,7 @@ impl PhysicsSystem {
             scene_physics: None,
             sync_epoch: 0,
             reports: StepReports::default(),
+            joints: JointLinks::default(),
         }
     }
 
@@ -223,9 +227,26 @@ impl PhysicsSystem {
             self.commands.clear();
             return;
         }
+        self.joints.sync(&world.ecs, &mut self.world, |e| {
+            self.links.get(e).map(|l| l.body)
+        });
         self.apply_commands(events);
         self.world.settings_mut().dt = dt;
         let output = self.world.step().clone();
+        for broken in &output.broken_joints {
+            let Some(e) = self.joints.entity(broken.joint) else {
+                continue;
+            };
+            if let Ok(mut joint) = world.ecs.get::<&mut Joint>(e) {
+                joint.broken = true;
+            }
+            tracing::warn!(
+                entity = %to_api(e),
+                "physics: joint broke under {:.1} N, {:.1} N·m",
+                broken.force.length(),
+                broken.torque.length()
+            );
+        }
         for handle in &output.quarantined {
             if let Some(e) = self.entity_of.get(handle) {
                 events.push(Event::Platform(PlatformEvent::Error {
