@@ -7,6 +7,7 @@ use glam::{Quat, Vec3};
 use crate::aabb::Aabb;
 use crate::body_handle::BodyHandle;
 use crate::collider::{Collider, NO_PROXY};
+use crate::collision_groups::CollisionGroups;
 use crate::combine_rule::CombineRule;
 use crate::material::Material;
 use crate::pose::Pose;
@@ -26,6 +27,7 @@ pub struct ColliderDesc {
     material: Material,
     density: f32,
     user_data: u64,
+    groups: CollisionGroups,
 }
 
 impl ColliderDesc {
@@ -37,6 +39,7 @@ impl ColliderDesc {
             material: Material::default(),
             density: DEFAULT_DENSITY,
             user_data: 0,
+            groups: CollisionGroups::ALL,
         }
     }
 
@@ -161,6 +164,12 @@ impl ColliderDesc {
         self
     }
 
+    /// Which groups it is in and collides with (default: all, with all).
+    pub fn collision_groups(mut self, groups: CollisionGroups) -> Self {
+        self.groups = groups;
+        self
+    }
+
     pub(crate) fn build(&self, parent: BodyHandle) -> Collider {
         Collider {
             shape: self.shape.clone(),
@@ -169,6 +178,7 @@ impl ColliderDesc {
             material: self.material,
             density: self.density,
             user_data: self.user_data,
+            groups: self.groups,
             proxy: NO_PROXY,
             aabb: Aabb::new(Vec3::ZERO, Vec3::ZERO),
         }

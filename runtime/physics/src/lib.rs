@@ -53,6 +53,7 @@ pub mod collider; // `Collider`: shape + offset + material on a body.
 pub mod collider_desc; // `ColliderDesc`: collider builder.
 pub mod collider_handle; // `ColliderHandle`: generational collider handle.
 pub mod collider_set; // `ColliderSet`: flat storage of colliders.
+pub mod collision_groups; // `CollisionGroups`: 32 membership/filter groups per collider.
 pub mod combine_rule; // `CombineRule`: how two materials mix.
 pub mod contact_event; // `ContactEvent`: contact started / ended.
 pub mod debug_line; // `DebugLine`: coloured segment for debug draw.
@@ -92,6 +93,7 @@ pub use collider::Collider;
 pub use collider_desc::ColliderDesc;
 pub use collider_handle::ColliderHandle;
 pub use collider_set::ColliderSet;
+pub use collision_groups::CollisionGroups;
 pub use combine_rule::CombineRule;
 pub use contact_event::{ContactEvent, ContactEventKind};
 pub use debug_line::DebugLine;

@@ -1,10 +1,11 @@
-//! `Joint` components from scene files, simulated by the host, against analytic answers: a
-//! hinged pendulum's quarter period, a door hinged to a moving frame, a weld that breaks.
+//! `Joint` components and collision groups from scene files, simulated by the host, against
+//! analytic answers: a hinged pendulum's quarter period, a door hinged to a moving frame, a
+//! weld that breaks, a bullet that flies through its shooter and stops on a wall.
 
 use std::path::{Path, PathBuf};
 
 use onyx_plugin_api::glam::Vec3;
-use onyx_plugin_api::{Joint, JointTarget, Transform};
+use onyx_plugin_api::{Collider, Joint, JointTarget, RigidBody, Transform};
 use onyx_runtime::HeadlessHost;
 
 fn write(dir: &Path, name: &str, text: &str) -> PathBuf {
@@ -149,5 +150,61 @@ fn a_door_follows_its_frame_and_an_overloaded_weld_breaks() {
         (held_t.translation - Vec3::new(8.0, 3.0, 0.0)).length() < 0.01,
         "held block at {}",
         held_t.translation
+    );
+}
+
+/// A bullet in group 2 whose filter leaves out group 1 flies through the shooter (group 1)
+/// at its launch speed and stops on the wall; an unfiltered bullet beside it hits the
+/// shooter's twin. The groups round-trip through the scene file.
+#[test]
+fn a_filtered_bullet_flies_through_its_shooter_and_stops_on_the_wall() {
+    let dir = tempfile::tempdir().unwrap();
+    let path = write(
+        dir.path(),
+        "range.ron",
+        r#"(version: 2, physics: Some((gravity: Some((0.0, 0.0, 0.0)), sleep_enabled: Some(false))), entities: [
+            (name: Some("wall"), transform: Some((translation: (5.0, 0.0, 0.0))),
+             rigid_body: Some((kind: Static)), collider: Some((shape: Box(half_extents: (0.5, 4.0, 4.0))))),
+            (name: Some("shooter"), transform: Some((translation: (0.0, 0.0, 0.0))),
+             rigid_body: Some((kind: Dynamic)),
+             collider: Some((shape: Box(half_extents: (0.5, 0.5, 0.5)), memberships: 1))),
+            (name: Some("bullet"), transform: Some((translation: (-1.0, 0.0, 0.0))),
+             rigid_body: Some((kind: Dynamic, linear_velocity: (10.0, 0.0, 0.0))),
+             collider: Some((shape: Sphere(radius: 0.1), memberships: 2, filter: 4294967294))),
+            (name: Some("twin"), transform: Some((translation: (0.0, 2.0, 0.0))),
+             rigid_body: Some((kind: Dynamic)),
+             collider: Some((shape: Box(half_extents: (0.5, 0.5, 0.5)), memberships: 1))),
+            (name: Some("plain bullet"), transform: Some((translation: (-1.0, 2.0, 0.0))),
+             rigid_body: Some((kind: Dynamic, linear_velocity: (10.0, 0.0, 0.0))),
+             collider: Some((shape: Sphere(radius: 0.1)))),
+        ])"#,
+    );
+    let mut host = HeadlessHost::new();
+    host.load_scene(&path).unwrap();
+    let (bullet, collider) = host.find::<Collider>("bullet").unwrap();
+    assert_eq!((collider.memberships, collider.filter), (2, !1));
+    host.set_frame_time(1.0 / 60.0);
+    host.step(20);
+    let rb = host.get::<RigidBody>(bullet).unwrap();
+    assert!(
+        (rb.linear_velocity.x - 10.0).abs() < 1e-3,
+        "the filtered bullet slowed to {}",
+        rb.linear_velocity
+    );
+    let (_, shooter) = host.find::<RigidBody>("shooter").unwrap();
+    assert!(
+        shooter.linear_velocity.length() < 1e-6,
+        "the shooter was hit"
+    );
+    let (_, twin) = host.find::<RigidBody>("twin").unwrap();
+    assert!(
+        twin.linear_velocity.x > 0.01,
+        "the plain bullet missed the twin"
+    );
+    host.step(60);
+    let p = host.get::<Transform>(bullet).unwrap().translation;
+    assert!(
+        p.x > 4.0 && p.x < 4.41,
+        "the filtered bullet is at {p}, not on the wall"
     );
 }

@@ -4,8 +4,8 @@ use std::collections::HashMap;
 
 use onyx_physics::glam::{Affine3A, Quat, Vec3};
 use onyx_physics::{
-    BodyHandle, BodyType, ColliderDesc, ContactEventKind, MassProperties, PhysicsSettings,
-    PhysicsWorld, Pose, QueryFilter, RigidBodyDesc,
+    BodyHandle, BodyType, ColliderDesc, CollisionGroups, ContactEventKind, MassProperties,
+    PhysicsSettings, PhysicsWorld, Pose, QueryFilter, RigidBodyDesc,
 };
 use onyx_plugin_api::host::PhysicsCommand;
 use onyx_plugin_api::{
@@ -341,7 +341,8 @@ impl PhysicsSystem {
             .density(collider.density)
             .restitution(collider.restitution)
             .static_friction(collider.static_friction)
-            .dynamic_friction(collider.friction))
+            .dynamic_friction(collider.friction)
+            .collision_groups(CollisionGroups::new(collider.memberships, collider.filter)))
     }
 
     /// Components → bodies in one pass over the simulated entities: builds new bodies,

@@ -22,6 +22,7 @@ impl PhysicsWorld {
                 continue;
             };
             if ca.parent == cb.parent
+                || !ca.groups.interacts_with(cb.groups)
                 || self
                     .joints
                     .keeps_apart(ca.parent.index(), cb.parent.index())
