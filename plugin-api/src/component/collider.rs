@@ -64,6 +64,10 @@ pub struct Collider {
     /// one's `memberships` meet the other's `filter`, so either side can refuse: bullets in
     /// group 2 with `filter: !1` fly through their shooter in group 1.
     pub filter: u32,
+    /// A sensor (trigger zone): overlaps are reported as
+    /// [`PhysicsEvent::SensorEntered`](crate::PhysicsEvent::SensorEntered) / `SensorExited`,
+    /// nothing is pushed.
+    pub sensor: bool,
 }
 
 impl Collider {
@@ -78,7 +82,15 @@ impl Collider {
             static_friction: 0.5,
             memberships: u32::MAX,
             filter: u32::MAX,
+            sensor: false,
         }
+    }
+
+    /// Returns this collider as a sensor (`true`) or a solid one.
+    #[must_use]
+    pub const fn with_sensor(mut self, sensor: bool) -> Self {
+        self.sensor = sensor;
+        self
     }
 
     /// Returns this collider in groups `memberships`, colliding with `filter`.
@@ -164,6 +176,9 @@ pub struct ColliderFile {
     /// Collision groups it collides with (default: all).
     #[serde(default = "all_groups", skip_serializing_if = "is_all")]
     pub filter: u32,
+    /// A sensor: overlaps reported, nothing pushed.
+    #[serde(default, skip_serializing_if = "std::ops::Not::not")]
+    pub sensor: bool,
 }
 
 fn all_groups() -> u32 {
@@ -308,6 +323,7 @@ impl Builtin for Collider {
                 .then_some(self.static_friction),
             memberships: self.memberships,
             filter: self.filter,
+            sensor: self.sensor,
         }
     }
 
@@ -339,6 +355,7 @@ impl Builtin for Collider {
             static_friction: file.static_friction.unwrap_or(file.friction),
             memberships: file.memberships,
             filter: file.filter,
+            sensor: file.sensor,
         })
     }
 }

@@ -28,6 +28,7 @@ pub struct ColliderDesc {
     density: f32,
     user_data: u64,
     groups: CollisionGroups,
+    sensor: bool,
 }
 
 impl ColliderDesc {
@@ -40,6 +41,7 @@ impl ColliderDesc {
             density: DEFAULT_DENSITY,
             user_data: 0,
             groups: CollisionGroups::ALL,
+            sensor: false,
         }
     }
 
@@ -164,6 +166,15 @@ impl ColliderDesc {
         self
     }
 
+    /// A sensor: overlaps with it are reported as contact events (`ContactEvent::sensor`),
+    /// with no contact response, no grounding and no CCD stop; it still has mass from its
+    /// density. Overlap is found from the poses a step starts from: the step after the one
+    /// that moved a body in (or out) reports it.
+    pub fn sensor(mut self, on: bool) -> Self {
+        self.sensor = on;
+        self
+    }
+
     /// Which groups it is in and collides with (default: all, with all).
     pub fn collision_groups(mut self, groups: CollisionGroups) -> Self {
         self.groups = groups;
@@ -179,6 +190,7 @@ impl ColliderDesc {
             density: self.density,
             user_data: self.user_data,
             groups: self.groups,
+            sensor: self.sensor,
             proxy: NO_PROXY,
             aabb: Aabb::new(Vec3::ZERO, Vec3::ZERO),
         }

@@ -75,6 +75,8 @@ fn sample(id: BuiltinId, ctx: &mut Ctx, parent: Entity) -> BuiltinValue {
             .with_density(250.0)
             .with_restitution(0.4)
             .with_friction(0.8)
+            .with_groups(0b101, !0b10)
+            .with_sensor(true)
             .into(),
         BuiltinId::Joint => Joint::revolute(JointTarget::Body(parent), [0.0, 0.0, 1.0])
             .with_anchors([0.5, 0.0, 0.0], [-0.5, 0.25, 0.0])

@@ -271,6 +271,19 @@ impl PhysicsSystem {
                 continue;
             };
             let (a, b) = (to_api(*a), to_api(*b));
+            if contact.sensor {
+                // The sensor is whichever collider is one (`a` when it is gone).
+                let b_is_sensor = self
+                    .world
+                    .collider(contact.collider_b)
+                    .is_some_and(onyx_physics::Collider::is_sensor);
+                let (sensor, other) = if b_is_sensor { (b, a) } else { (a, b) };
+                events.push(Event::Physics(match contact.kind {
+                    ContactEventKind::Started => PhysicsEvent::SensorEntered { sensor, other },
+                    ContactEventKind::Ended => PhysicsEvent::SensorExited { sensor, other },
+                }));
+                continue;
+            }
             events.push(Event::Physics(match contact.kind {
                 ContactEventKind::Started => PhysicsEvent::ContactStarted {
                     a,
@@ -342,7 +355,8 @@ impl PhysicsSystem {
             .restitution(collider.restitution)
             .static_friction(collider.static_friction)
             .dynamic_friction(collider.friction)
-            .collision_groups(CollisionGroups::new(collider.memberships, collider.filter)))
+            .collision_groups(CollisionGroups::new(collider.memberships, collider.filter))
+            .sensor(collider.sensor))
     }
 
     /// Components → bodies in one pass over the simulated entities: builds new bodies,

@@ -115,6 +115,7 @@ impl NarrowPhase {
         ma: &Material,
         mb: &Material,
         size: f32,
+        sensor: bool,
     ) -> bool {
         let k = key(ca, cb);
         if self.index.contains_key(&k) {
@@ -129,6 +130,7 @@ impl NarrowPhase {
             body_b: bb,
             manifolds: Vec::new(),
             touching: false,
+            sensor,
             restitution: e,
             static_friction: fs,
             dynamic_friction: fd,
@@ -620,5 +622,6 @@ pub(crate) fn make_event(
         normal,
         points,
         impulse,
+        sensor: p.sensor,
     }
 }

@@ -46,6 +46,7 @@ impl PhysicsWorld {
                 &ca.material,
                 &cb.material,
                 ca.shape.size().min(cb.shape.size()),
+                ca.sensor || cb.sensor,
             ) {
                 added += 1;
             }

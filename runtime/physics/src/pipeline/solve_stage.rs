@@ -185,7 +185,7 @@ impl PhysicsWorld {
         let mut bouncy = false;
         for &pi in &self.narrowphase.updated_pairs {
             let pair = &self.narrowphase.pairs[pi as usize];
-            if pair.manifolds.is_empty() {
+            if pair.manifolds.is_empty() || pair.sensor {
                 continue;
             }
             // Compact per-body slots, not the bodies themselves: this loop visits every pair.
