@@ -36,6 +36,7 @@ mod procedural;
 mod up_axis;
 mod vertex;
 
+pub use gltf::catch_gltf_panics;
 pub use import_settings::ImportSettings;
 pub use invalid_mesh_error::InvalidMeshError;
 pub(crate) use mesh_cache::{cache_key, MeshCache};
