@@ -123,7 +123,10 @@ pub trait Listed: Sized {
     const ID: crate::BuiltinId;
     /// Wraps it.
     fn into_value(self) -> crate::BuiltinValue;
-    /// Unwraps it, or gives the value back when it is another component.
+    /// Unwraps it, or gives the value back when it is another component. (The value comes
+    /// back whole, as large as the largest built-in, a `Joint`'s 130-odd bytes: it is a
+    /// plain copy on a path that runs per tool call, not per body.)
+    #[allow(clippy::result_large_err)]
     fn from_value(value: crate::BuiltinValue) -> Result<Self, crate::BuiltinValue>;
     /// Borrows it out of a value of the same component.
     fn ref_from(value: &crate::BuiltinValue) -> Option<&Self>;

@@ -29,6 +29,7 @@ macro_rules! for_each_builtin {
             RigidBody => rigid_body: $crate::RigidBody as $crate::RigidBody,
             Collider => collider: $crate::Collider as $crate::Collider,
             Animator => animator: $crate::Animator as $crate::Animator,
+            Joint => joint: $crate::Joint as $crate::Joint,
         }
     };
 }
@@ -213,6 +214,7 @@ impl BuiltinValue {
     }
 
     /// The value as a `T`, or itself back when it is another component.
+    #[allow(clippy::result_large_err)] // See `Listed::from_value`.
     pub fn into_inner<T: Builtin>(self) -> Result<T, Self> {
         T::from_value(self)
     }

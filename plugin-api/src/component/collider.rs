@@ -58,6 +58,16 @@ pub struct Collider {
     pub friction: f32,
     /// Friction coefficient at rest (≥ `friction` in real materials).
     pub static_friction: f32,
+    /// The collision groups (bits of 32) this collider is in (default: all).
+    pub memberships: u32,
+    /// The groups it collides with (default: all). Two colliders collide only when each
+    /// one's `memberships` meet the other's `filter`, so either side can refuse: bullets in
+    /// group 2 with `filter: !1` fly through their shooter in group 1.
+    pub filter: u32,
+    /// A sensor (trigger zone): overlaps are reported as
+    /// [`PhysicsEvent::SensorEntered`](crate::PhysicsEvent::SensorEntered) / `SensorExited`,
+    /// nothing is pushed.
+    pub sensor: bool,
 }
 
 impl Collider {
@@ -70,7 +80,25 @@ impl Collider {
             restitution: 0.0,
             friction: 0.5,
             static_friction: 0.5,
+            memberships: u32::MAX,
+            filter: u32::MAX,
+            sensor: false,
         }
+    }
+
+    /// Returns this collider as a sensor (`true`) or a solid one.
+    #[must_use]
+    pub const fn with_sensor(mut self, sensor: bool) -> Self {
+        self.sensor = sensor;
+        self
+    }
+
+    /// Returns this collider in groups `memberships`, colliding with `filter`.
+    #[must_use]
+    pub const fn with_groups(mut self, memberships: u32, filter: u32) -> Self {
+        self.memberships = memberships;
+        self.filter = filter;
+        self
     }
 
     /// A sphere.
@@ -142,6 +170,23 @@ pub struct ColliderFile {
     /// Friction at rest (defaults to `friction`).
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub static_friction: Option<f32>,
+    /// Collision groups it is in (default: all).
+    #[serde(default = "all_groups", skip_serializing_if = "is_all")]
+    pub memberships: u32,
+    /// Collision groups it collides with (default: all).
+    #[serde(default = "all_groups", skip_serializing_if = "is_all")]
+    pub filter: u32,
+    /// A sensor: overlaps reported, nothing pushed.
+    #[serde(default, skip_serializing_if = "std::ops::Not::not")]
+    pub sensor: bool,
+}
+
+fn all_groups() -> u32 {
+    u32::MAX
+}
+
+fn is_all(groups: &u32) -> bool {
+    *groups == u32::MAX
 }
 
 fn water() -> f32 {
@@ -276,6 +321,9 @@ impl Builtin for Collider {
             friction: self.friction,
             static_friction: (self.static_friction != self.friction)
                 .then_some(self.static_friction),
+            memberships: self.memberships,
+            filter: self.filter,
+            sensor: self.sensor,
         }
     }
 
@@ -305,6 +353,9 @@ impl Builtin for Collider {
             restitution: file.restitution,
             friction: file.friction,
             static_friction: file.static_friction.unwrap_or(file.friction),
+            memberships: file.memberships,
+            filter: file.filter,
+            sensor: file.sensor,
         })
     }
 }

@@ -10,7 +10,8 @@
 //!   [`TextureId`]), `shading_mode.rs`, `camera.rs`, `light.rs`: what the renderer draws.
 //! - `debug_line.rs`: [`DebugLine`], one frame's debug drawing.
 //! - `rigid_body.rs` ([`RigidBody`], [`BodyKind`], [`LockedAxes`]), `collider.rs`
-//!   ([`Collider`], [`ColliderShape`]), `ray_hit.rs` ([`RayHit`]): physics.
+//!   ([`Collider`], [`ColliderShape`]), `joint.rs` ([`Joint`], [`JointTarget`]), `ray_hit.rs`
+//!   ([`RayHit`]): physics.
 //! - `animator.rs`: [`Animator`] ([`AnimationId`]), a node animation playing on the
 //!   entities below.
 //! - `component.rs`: [`Component`], a plugin's own serde component.
@@ -31,6 +32,7 @@ pub(crate) mod component_type;
 mod debug_line;
 mod entity_transform;
 mod global_transform;
+mod joint;
 mod light;
 mod mesh_id;
 mod mesh_renderer;
@@ -53,6 +55,7 @@ pub use component_type::ComponentType;
 pub use debug_line::DebugLine;
 pub use entity_transform::EntityTransform;
 pub use global_transform::GlobalTransform;
+pub use joint::{Joint, JointFile, JointKind, JointMotor, JointTarget};
 pub use light::Light;
 pub use mesh_id::{MeshId, TextureId};
 pub use mesh_renderer::{Material, MeshRenderer, MeshRendererFile};

@@ -28,4 +28,19 @@ pub enum PhysicsEvent {
         /// Second entity.
         b: Entity,
     },
+    /// `other` started overlapping the sensor collider of `sensor` (reported in the step
+    /// after the one that moved it in).
+    SensorEntered {
+        /// The entity whose collider is the sensor.
+        sensor: Entity,
+        /// The entity that entered.
+        other: Entity,
+    },
+    /// `other` stopped overlapping `sensor` (or one of them was removed).
+    SensorExited {
+        /// The sensor's entity.
+        sensor: Entity,
+        /// The entity that left.
+        other: Entity,
+    },
 }

@@ -83,6 +83,14 @@ pub enum EventFfi<'a> {
         a: Entity,
         b: Entity,
     },
+    SensorEntered {
+        sensor: Entity,
+        other: Entity,
+    },
+    SensorExited {
+        sensor: Entity,
+        other: Entity,
+    },
     Custom {
         name: RStr<'a>,
         sender: RStr<'a>,
@@ -174,6 +182,18 @@ impl<'a> From<&'a Event> for EventFfi<'a> {
             },
             Event::Physics(PhysicsEvent::ContactEnded { a, b }) => {
                 EventFfi::ContactEnded { a: *a, b: *b }
+            }
+            Event::Physics(PhysicsEvent::SensorEntered { sensor, other }) => {
+                EventFfi::SensorEntered {
+                    sensor: *sensor,
+                    other: *other,
+                }
+            }
+            Event::Physics(PhysicsEvent::SensorExited { sensor, other }) => {
+                EventFfi::SensorExited {
+                    sensor: *sensor,
+                    other: *other,
+                }
             }
             Event::Custom(CustomEvent {
                 name,
@@ -268,6 +288,12 @@ impl From<EventFfi<'_>> for Event {
             }
             .into(),
             EventFfi::ContactEnded { a, b } => PhysicsEvent::ContactEnded { a, b }.into(),
+            EventFfi::SensorEntered { sensor, other } => {
+                PhysicsEvent::SensorEntered { sensor, other }.into()
+            }
+            EventFfi::SensorExited { sensor, other } => {
+                PhysicsEvent::SensorExited { sensor, other }.into()
+            }
             EventFfi::Custom {
                 name,
                 sender,
@@ -353,6 +379,16 @@ mod tests {
             PhysicsEvent::ContactEnded {
                 a: Entity::from_bits(2),
                 b: Entity::from_bits(1),
+            }
+            .into(),
+            PhysicsEvent::SensorEntered {
+                sensor: Entity::from_bits(3),
+                other: Entity::from_bits(4),
+            }
+            .into(),
+            PhysicsEvent::SensorExited {
+                sensor: Entity::from_bits(4),
+                other: Entity::from_bits(3),
             }
             .into(),
             CustomEvent {

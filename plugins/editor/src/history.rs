@@ -4,6 +4,9 @@ use onyx_plugin_api::tools::{ComponentKey, ComponentValue};
 use onyx_plugin_api::{BuiltinValue, Ctx, CtxError, Entity, Parent};
 
 /// One undoable edit.
+// A component value is as large as the largest built-in (a `Joint`, 130-odd bytes) and a
+// change holds two: one edit's entry in the undo stack, not worth boxing.
+#[allow(clippy::large_enum_variant)]
 #[derive(Clone, Debug, PartialEq)]
 pub enum Command {
     /// A component changed (`None`: absent, so this also covers add and remove; a rename is

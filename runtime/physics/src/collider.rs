@@ -2,6 +2,7 @@
 
 use crate::aabb::Aabb;
 use crate::body_handle::BodyHandle;
+use crate::collision_groups::CollisionGroups;
 use crate::material::Material;
 use crate::pose::Pose;
 use crate::shape::Shape;
@@ -19,11 +20,26 @@ pub struct Collider {
     pub(crate) material: Material,
     pub(crate) density: f32,
     pub(crate) user_data: u64,
+    pub(crate) groups: CollisionGroups,
+    pub(crate) sensor: bool,
     pub(crate) proxy: u32,
     pub(crate) aabb: Aabb,
 }
 
 impl Collider {
+    /// Whether it is a sensor: it reports overlaps (contact events with
+    /// [`crate::ContactEvent::sensor`] set) and pushes nothing.
+    #[must_use]
+    pub fn is_sensor(&self) -> bool {
+        self.sensor
+    }
+
+    /// Its collision groups.
+    #[must_use]
+    pub fn collision_groups(&self) -> CollisionGroups {
+        self.groups
+    }
+
     /// The shape.
     #[must_use]
     pub fn shape(&self) -> &Shape {

@@ -7,6 +7,7 @@ use glam::{Quat, Vec3};
 use crate::aabb::Aabb;
 use crate::body_handle::BodyHandle;
 use crate::collider::{Collider, NO_PROXY};
+use crate::collision_groups::CollisionGroups;
 use crate::combine_rule::CombineRule;
 use crate::material::Material;
 use crate::pose::Pose;
@@ -26,6 +27,8 @@ pub struct ColliderDesc {
     material: Material,
     density: f32,
     user_data: u64,
+    groups: CollisionGroups,
+    sensor: bool,
 }
 
 impl ColliderDesc {
@@ -37,6 +40,8 @@ impl ColliderDesc {
             material: Material::default(),
             density: DEFAULT_DENSITY,
             user_data: 0,
+            groups: CollisionGroups::ALL,
+            sensor: false,
         }
     }
 
@@ -161,6 +166,21 @@ impl ColliderDesc {
         self
     }
 
+    /// A sensor: overlaps with it are reported as contact events (`ContactEvent::sensor`),
+    /// with no contact response, no grounding and no CCD stop; it still has mass from its
+    /// density. Overlap is found from the poses a step starts from: the step after the one
+    /// that moved a body in (or out) reports it.
+    pub fn sensor(mut self, on: bool) -> Self {
+        self.sensor = on;
+        self
+    }
+
+    /// Which groups it is in and collides with (default: all, with all).
+    pub fn collision_groups(mut self, groups: CollisionGroups) -> Self {
+        self.groups = groups;
+        self
+    }
+
     pub(crate) fn build(&self, parent: BodyHandle) -> Collider {
         Collider {
             shape: self.shape.clone(),
@@ -169,6 +189,8 @@ impl ColliderDesc {
             material: self.material,
             density: self.density,
             user_data: self.user_data,
+            groups: self.groups,
+            sensor: self.sensor,
             proxy: NO_PROXY,
             aabb: Aabb::new(Vec3::ZERO, Vec3::ZERO),
         }

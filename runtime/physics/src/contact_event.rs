@@ -36,4 +36,7 @@ pub struct ContactEvent {
     pub points: Vec<Vec3>,
     /// Total normal impulse applied in the step of the event, N·s (0 for `Ended`).
     pub impulse: f32,
+    /// One of the colliders is a sensor: the event is an overlap starting or ending, and
+    /// nothing was pushed.
+    pub sensor: bool,
 }

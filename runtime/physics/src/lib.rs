@@ -48,15 +48,22 @@ pub mod body_handle; // `BodyHandle`: generational body handle.
 pub mod body_set; // `BodySet`: flat storage of bodies.
 pub mod body_type; // `BodyType`: dynamic, kinematic, static.
 pub mod broadphase; // Dynamic AABB tree and new-pair search.
+pub mod broken_joint; // `BrokenJoint`: a joint that broke this step (reported once).
 pub mod collider; // `Collider`: shape + offset + material on a body.
 pub mod collider_desc; // `ColliderDesc`: collider builder.
 pub mod collider_handle; // `ColliderHandle`: generational collider handle.
 pub mod collider_set; // `ColliderSet`: flat storage of colliders.
+pub mod collision_groups; // `CollisionGroups`: 32 membership/filter groups per collider.
 pub mod combine_rule; // `CombineRule`: how two materials mix.
 pub mod contact_event; // `ContactEvent`: contact started / ended.
 pub mod debug_line; // `DebugLine`: coloured segment for debug draw.
 pub mod debug_lines; // `PhysicsWorld::debug_lines`: outlines, contacts, normals.
 pub mod far_body; // `FarBody`: a moving body past the precise range of f32 (reported once).
+pub mod joint; // `Joint`: a joint in the world (description, bodies, reaction, broken).
+pub mod joint_desc; // `JointDesc`: joint kinds (fixed, revolute, prismatic, spherical, distance), limits, motors, springs.
+pub mod joint_error; // `JointError`: why a joint was refused.
+pub mod joint_handle; // `JointHandle`: generational joint handle.
+pub mod joint_set; // `JointSet`: flat storage of joints.
 pub mod locked_axes; // `LockedAxes`: per-axis locks.
 pub mod mass_properties; // `MassProperties`: mass, centre of mass, inertia tensor.
 pub mod material; // `Material`: restitution and friction.
@@ -81,14 +88,21 @@ pub use aabb::Aabb;
 pub use body_handle::BodyHandle;
 pub use body_set::BodySet;
 pub use body_type::BodyType;
+pub use broken_joint::BrokenJoint;
 pub use collider::Collider;
 pub use collider_desc::ColliderDesc;
 pub use collider_handle::ColliderHandle;
 pub use collider_set::ColliderSet;
+pub use collision_groups::CollisionGroups;
 pub use combine_rule::CombineRule;
 pub use contact_event::{ContactEvent, ContactEventKind};
 pub use debug_line::DebugLine;
 pub use far_body::FarBody;
+pub use joint::Joint;
+pub use joint_desc::{JointDesc, JointKind, JointLimits, JointMotor, JointSpring, MotorTarget};
+pub use joint_error::JointError;
+pub use joint_handle::JointHandle;
+pub use joint_set::JointSet;
 pub use locked_axes::LockedAxes;
 pub use mass_properties::MassProperties;
 pub use material::Material;

@@ -140,6 +140,17 @@ pub struct PhysicsSettings {
     /// Global switch for continuous collision detection (bodies also opt in).
     /// Default: `true`
     pub ccd_enabled: bool,
+    /// Joint stiffness, Hz: how fast the biased passes pull a joint's position error back
+    /// (clamped to half the substep rate, see `JOINT_STIFFNESS_MAX_SUBSTEP_FRACTION`).
+    /// Default: `60` (Box2D v3's: twice its contact stiffness)
+    /// Too high: no better than rigid at the clamp. Too low: joints stretch and sag visibly
+    /// under load (chains, heavy ends).
+    pub joint_hertz: f32,
+    /// Joint damping ratio (dimensionless).
+    /// Default: `2`
+    /// Too high: the position error is pulled back sluggishly. Too low: joints ring after a
+    /// jolt.
+    pub joint_damping_ratio: f32,
     /// A contact normal with `y` at least this (toward the body) marks the body grounded.
     /// Default: `0.7`
     /// Too high: slopes do not count as ground. Too low: walls count as ground.
@@ -215,6 +226,8 @@ impl PhysicsSettings {
         non_negative("sleep_linear_threshold", self.sleep_linear_threshold)?;
         non_negative("sleep_angular_threshold", self.sleep_angular_threshold)?;
         non_negative("time_to_sleep", self.time_to_sleep)?;
+        positive("joint_hertz", self.joint_hertz)?;
+        non_negative("joint_damping_ratio", self.joint_damping_ratio)?;
         check(
             "grounded_min_normal_y",
             self.grounded_min_normal_y,
@@ -268,6 +281,8 @@ impl Default for PhysicsSettings {
             sleep_angular_threshold: 0.1,
             time_to_sleep: 0.5,
             ccd_enabled: true,
+            joint_hertz: 60.0,
+            joint_damping_ratio: 2.0,
             grounded_min_normal_y: 0.7,
         }
     }

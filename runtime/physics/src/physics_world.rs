@@ -14,6 +14,11 @@ use crate::collider_desc::ColliderDesc;
 use crate::collider_handle::ColliderHandle;
 use crate::collider_set::ColliderSet;
 use crate::contact_event::ContactEvent;
+use crate::joint::{Joint, JointImpulses};
+use crate::joint_desc::{JointDesc, JointKind};
+use crate::joint_error::JointError;
+use crate::joint_handle::JointHandle;
+use crate::joint_set::JointSet;
 use crate::mass_properties::MassProperties;
 use crate::narrowphase::NarrowPhase;
 use crate::physics_settings::PhysicsSettings;
@@ -21,6 +26,7 @@ use crate::rigid_body::RigidBody;
 use crate::rigid_body_desc::RigidBodyDesc;
 use crate::solver::body_state::BodyState;
 use crate::solver::contact_constraint::ManifoldRef;
+use crate::solver::joint_constraint::JointConstraint;
 use crate::solver::solver_body::SolverBody;
 use crate::step_output::StepOutput;
 
@@ -33,6 +39,9 @@ pub struct PhysicsWorld {
     pub(crate) settings: PhysicsSettings,
     pub(crate) bodies: BodySet,
     pub(crate) colliders: ColliderSet,
+    pub(crate) joints: JointSet,
+    /// The joints the solver takes this step, prepared.
+    pub(crate) joint_constraints: Vec<JointConstraint>,
     pub(crate) broadphase: BroadPhase,
     pub(crate) narrowphase: NarrowPhase,
     pub(crate) output: StepOutput,
@@ -105,6 +114,8 @@ impl PhysicsWorld {
             settings,
             bodies: BodySet::default(),
             colliders: ColliderSet::default(),
+            joints: JointSet::default(),
+            joint_constraints: Vec::new(),
             broadphase: BroadPhase::default(),
             narrowphase: NarrowPhase::default(),
             output: StepOutput::default(),
@@ -252,7 +263,7 @@ impl PhysicsWorld {
         true
     }
 
-    /// Removes a body and its colliders.
+    /// Removes a body, its colliders and its joints.
     pub fn remove_body(&mut self, h: BodyHandle) -> bool {
         let Some(b) = self.bodies.get(h) else {
             return false;
@@ -260,10 +271,158 @@ impl PhysicsWorld {
         for c in b.colliders.clone() {
             self.remove_collider(c);
         }
+        let attached: Vec<JointHandle> = self
+            .joints
+            .iter()
+            .filter(|(_, j)| j.body_a == Some(h) || j.body_b == h)
+            .map(|(jh, _)| jh)
+            .collect();
+        for jh in attached {
+            self.remove_joint(jh);
+        }
         self.bodies
             .arena
             .remove(h.index(), h.generation())
             .is_some()
+    }
+
+    /// All joints.
+    #[must_use]
+    pub fn joints(&self) -> &JointSet {
+        &self.joints
+    }
+
+    /// A joint.
+    #[must_use]
+    pub fn joint(&self, h: JointHandle) -> Option<&Joint> {
+        self.joints.get(h)
+    }
+
+    /// Joins body `body_b` to `body_a` (`None`: to the world) as `desc` says, and wakes both.
+    /// Unless the joint lets them (`JointDesc::collide_connected`), the two bodies stop
+    /// colliding with each other from now on.
+    ///
+    /// # Errors
+    /// A description [`JointDesc::validate`] refuses, a body that is not in the world, or the
+    /// same body on both sides.
+    pub fn insert_joint(
+        &mut self,
+        desc: JointDesc,
+        body_a: Option<BodyHandle>,
+        body_b: BodyHandle,
+    ) -> Result<JointHandle, JointError> {
+        desc.validate()?;
+        for h in body_a.into_iter().chain([body_b]) {
+            if self.bodies.get(h).is_none() {
+                return Err(JointError::NoSuchBody(h));
+            }
+        }
+        if body_a == Some(body_b) {
+            return Err(JointError::SameBody(body_b));
+        }
+        let (i, g) = self.joints.arena.insert(Joint {
+            desc,
+            body_a,
+            body_b,
+            impulses: JointImpulses::default(),
+            force: Vec3::ZERO,
+            torque: Vec3::ZERO,
+            broken: false,
+        });
+        if !desc.collide_connected {
+            self.joints.count_no_collide(body_a, body_b, true);
+            if let Some(a) = body_a {
+                self.narrowphase.remove_pairs_between(
+                    a,
+                    body_b,
+                    &self.bodies,
+                    &mut self.pending_events,
+                );
+            }
+        }
+        self.wake_joined(body_a, body_b);
+        Ok(JointHandle::from_parts(i, g))
+    }
+
+    /// Replaces a joint's description (its impulses start afresh) and wakes its bodies; a
+    /// broken joint stays broken.
+    ///
+    /// # Errors
+    /// A description [`JointDesc::validate`] refuses, or a joint that is not there.
+    pub fn set_joint_desc(&mut self, h: JointHandle, desc: JointDesc) -> Result<(), JointError> {
+        desc.validate()?;
+        let joint = self
+            .joints
+            .arena
+            .get_mut(h.index(), h.generation())
+            .ok_or(JointError::NoSuchJoint)?;
+        let (a, b, was, broken) = (
+            joint.body_a,
+            joint.body_b,
+            joint.desc.collide_connected,
+            joint.broken,
+        );
+        joint.desc = desc;
+        joint.impulses = JointImpulses::default();
+        if !broken && was != desc.collide_connected {
+            self.joints.count_no_collide(a, b, !desc.collide_connected);
+            if let (false, Some(a)) = (desc.collide_connected, a) {
+                self.narrowphase
+                    .remove_pairs_between(a, b, &self.bodies, &mut self.pending_events);
+            }
+        }
+        self.wake_joined(a, b);
+        Ok(())
+    }
+
+    /// Removes a joint (its bodies collide again if it kept them apart). Returns whether
+    /// it was there.
+    pub fn remove_joint(&mut self, h: JointHandle) -> bool {
+        let Some(joint) = self.joints.arena.remove(h.index(), h.generation()) else {
+            return false;
+        };
+        if !joint.desc.collide_connected && !joint.broken {
+            self.joints
+                .count_no_collide(joint.body_a, joint.body_b, false);
+        }
+        self.wake_joined(joint.body_a, joint.body_b);
+        true
+    }
+
+    /// The joint's coordinate at the bodies' current poses: a hinge's angle (rad, in
+    /// (−π, π]), a slider's translation (m), a distance joint's length (m), a ball joint's
+    /// twist (rad); `None` for a weld or a joint that is not there.
+    #[must_use]
+    pub fn joint_coordinate(&self, h: JointHandle) -> Option<f32> {
+        let joint = self.joints.get(h)?;
+        let frame = |body: Option<BodyHandle>, local: &crate::pose::Pose| match body {
+            Some(b) => self.bodies.get(b).map(|b| b.pose.mul_pose(local)),
+            None => Some(*local),
+        };
+        let fa = frame(joint.body_a, &joint.desc.frame_a)?;
+        let fb = frame(Some(joint.body_b), &joint.desc.frame_b)?;
+        let twist = || {
+            let q = fa.rotation.inverse() * fb.rotation;
+            let q = if q.w < 0.0 { -q } else { q };
+            2.0 * q.x.atan2(q.w)
+        };
+        match joint.desc.kind {
+            JointKind::Fixed => None,
+            JointKind::Revolute { .. } | JointKind::Spherical { .. } => Some(twist()),
+            JointKind::Prismatic { .. } => {
+                Some((fa.rotation * Vec3::X).dot(fb.translation - fa.translation))
+            }
+            JointKind::Distance { .. } => Some(fb.translation.distance(fa.translation)),
+        }
+    }
+
+    /// Wakes the bodies of a joint that was added, changed or removed.
+    fn wake_joined(&mut self, a: Option<BodyHandle>, b: BodyHandle) {
+        for h in a.into_iter().chain([b]) {
+            if let Some(body) = self.bodies.get_mut(h) {
+                body.wake_up();
+            }
+        }
     }
 
     /// Recomputes a body's mass properties from its colliders (or its explicit override).
@@ -306,6 +465,7 @@ impl PhysicsWorld {
         self.output.speed_caps.clear();
         self.output.overloaded_contacts.clear();
         self.output.far_bodies.clear();
+        self.output.broken_joints.clear();
         self.output.counters = Default::default();
         if !(self.settings.dt > 0.0 && self.settings.dt.is_finite()) {
             return &self.output;

@@ -31,6 +31,8 @@ pub struct StepCounters {
     pub reused_pairs: u32,
     /// Contact points solved.
     pub contacts: u32,
+    /// Joints solved.
+    pub joints: u32,
     /// GJK runs.
     pub gjk_calls: u32,
     /// GJK iterations summed.

@@ -1,6 +1,7 @@
 //! [`StepOutput`]: everything a step reports (counters, events, quarantined bodies).
 
 use crate::body_handle::BodyHandle;
+use crate::broken_joint::BrokenJoint;
 use crate::contact_event::ContactEvent;
 use crate::far_body::FarBody;
 use crate::overloaded_contact::OverloadedContact;
@@ -22,4 +23,6 @@ pub struct StepOutput {
     pub overloaded_contacts: Vec<OverloadedContact>,
     /// Moving bodies first found past `PhysicsSettings::precise_range` (once per body).
     pub far_bodies: Vec<FarBody>,
+    /// Joints that broke this step (their force or torque passed their threshold).
+    pub broken_joints: Vec<BrokenJoint>,
 }

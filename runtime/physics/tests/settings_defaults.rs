@@ -59,6 +59,8 @@ fn documented_defaults_equal_default_impl() {
                 "sleep_angular_threshold" => parse_num(&doc) == d.sleep_angular_threshold,
                 "time_to_sleep" => parse_num(&doc) == d.time_to_sleep,
                 "ccd_enabled" => doc.parse::<bool>().unwrap() == d.ccd_enabled,
+                "joint_hertz" => parse_num(&doc) == d.joint_hertz,
+                "joint_damping_ratio" => parse_num(&doc) == d.joint_damping_ratio,
                 "grounded_min_normal_y" => parse_num(&doc) == d.grounded_min_normal_y,
                 other => panic!("test does not know field {other}: add it"),
             };
@@ -69,7 +71,7 @@ fn documented_defaults_equal_default_impl() {
             checked += 1;
         }
     }
-    assert_eq!(checked, 25, "every settings field checked");
+    assert_eq!(checked, 27, "every settings field checked");
 }
 
 #[test]

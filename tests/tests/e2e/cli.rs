@@ -456,3 +456,55 @@ fn a_scene_with_a_hierarchy_dumps_each_parent_and_world_pose() {
         "the local transform is what the file says"
     );
 }
+
+/// A preset on the command line replaces the scene's step rate and substeps only: the scene's
+/// moon gravity and its own speed cap stay, and hitting that cap is said once, not per step.
+#[test]
+fn a_command_line_preset_keeps_the_scenes_other_physics_settings() {
+    let dir = tempfile::tempdir().unwrap();
+    let scene = dir.path().join("moon.ron");
+    std::fs::write(
+        &scene,
+        r#"(version: 1, physics: Some((preset: Fast, substeps: Some(3), gravity: Some((0.0, -1.62, 0.0)), max_angular_speed: Some(50.0))),
+        entities: [
+            (name: Some("ball"), transform: Some((translation: (0.0, 5.0, 0.0))),
+             rigid_body: Some((kind: Dynamic)), collider: Some((shape: Sphere(radius: 0.5)))),
+            (name: Some("top"), transform: Some((translation: (40.0, 5.0, 0.0))),
+             rigid_body: Some((kind: Dynamic, angular_velocity: (0.0, 80.0, 0.0), gravity_scale: 0.0)),
+             collider: Some((shape: Sphere(radius: 0.5)))),
+        ])"#,
+    )
+    .unwrap();
+    let dump_path = dir.path().join("dump.json");
+    // One simulated second at precise (120 Hz): y = 5 - g t² / 2 under the scene's gravity.
+    let out = onyx(&[
+        "run",
+        "--headless",
+        "--frames",
+        "120",
+        "--physics",
+        "precise",
+        "--scene",
+        scene.to_str().unwrap(),
+        "--dump-state",
+        dump_path.to_str().unwrap(),
+    ]);
+    assert!(out.status.success(), "{}", stderr(&out));
+    let dump = read_json(&dump_path);
+    assert!((dump["time"]["fixed_delta"].as_f64().unwrap() - 1.0 / 120.0).abs() < 1e-6);
+    let y = entity(&dump, "ball")["components"]["Transform"]["translation"][1]
+        .as_f64()
+        .unwrap();
+    let expected = 5.0 - 0.5 * 1.62;
+    assert!(
+        (y - expected).abs() < 0.02,
+        "y = {y}, expected {expected} (moon gravity kept)"
+    );
+    let spin = entity(&dump, "top")["components"]["RigidBody"]["angular_velocity"][1]
+        .as_f64()
+        .unwrap();
+    assert!(spin <= 50.0 + 1e-3, "spin {spin} above the scene's cap");
+    let log = stderr(&out);
+    let said = log.matches("spin cap of 50 rad/s").count();
+    assert_eq!(said, 1, "the cap is reported once, not per step:\n{log}");
+}

@@ -321,3 +321,70 @@ fn the_example_script_lists_every_example_and_runs_only_those() {
         .expect("bash runs");
     assert_eq!(unknown.status.code(), Some(2));
 }
+
+#[test]
+fn joints_open_the_door_hang_the_chain_hold_the_ragdoll_and_count_the_zone() {
+    let mut host = example_host(&["joints"]);
+    host.step(240); // 4 s at 60 Hz
+    assert_running(&host);
+    // The door's servo swings it to 90° about the vertical hinge.
+    let door = transform(&host, "door");
+    let side = door.rotation * Vec3::X;
+    let angle = (-side.z).atan2(side.x);
+    assert!(
+        (angle - std::f32::consts::FRAC_PI_2).abs() < 0.05,
+        "the door is at {angle} rad"
+    );
+    let hinge = door.translation + door.rotation * Vec3::new(-0.5, 0.0, 0.0);
+    assert!(
+        (hinge - Vec3::new(0.05, 1.1, 0.0)).length() < 0.01,
+        "hinge at {hinge}"
+    );
+    // Each chain link's ends stay on the next link's while the chain still swings: within
+    // 2 % of a link (the swinging tip, fastest, measured 3.5 mm at balanced).
+    let half = 0.15;
+    let mut previous_end = Vec3::new(-4.0, 5.0, 0.0);
+    for k in 0..10 {
+        let t = transform(&host, &format!("link {k}"));
+        let back = t.translation + t.rotation * Vec3::new(-half, 0.0, 0.0);
+        assert!(
+            (back - previous_end).length() < 0.006,
+            "link {k} is {} m off its joint",
+            (back - previous_end).length()
+        );
+        previous_end = t.translation + t.rotation * Vec3::new(half, 0.0, 0.0);
+    }
+    // The ragdoll fell to the ground with every limb still on its joint.
+    let torso = transform(&host, "torso");
+    assert!(
+        torso.translation.y < 1.0,
+        "the ragdoll did not fall: {}",
+        torso.translation
+    );
+    for (name, offset, on_torso) in [
+        ("head", Vec3::new(0.0, 0.55, 0.0), Vec3::new(0.0, 0.35, 0.0)),
+        (
+            "left arm",
+            Vec3::new(-0.55, 0.15, 0.0),
+            Vec3::new(-0.25, 0.2, 0.0),
+        ),
+        (
+            "left leg",
+            Vec3::new(-0.12, -0.7, 0.0),
+            Vec3::new(-0.12, -0.35, 0.0),
+        ),
+    ] {
+        let limb = transform(&host, name);
+        let on_limb = limb.translation + limb.rotation * (on_torso - offset);
+        let on_body = torso.translation + torso.rotation * on_torso;
+        assert!(
+            (on_limb - on_body).length() < 0.01,
+            "{name} is {} m off its joint",
+            (on_limb - on_body).length()
+        );
+    }
+    // The ball fell through the zone: in once, out once.
+    let stats = component(&host, "zone", "joints.zone");
+    assert_eq!(stats["entered"], 1, "{stats}");
+    assert_eq!(stats["exited"], 1, "{stats}");
+}

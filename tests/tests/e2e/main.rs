@@ -13,6 +13,7 @@ mod gui;
 mod hardening;
 mod hierarchy;
 mod host_services;
+mod joints;
 mod lifecycle;
 mod loading;
 mod native_failures;

@@ -418,3 +418,69 @@ fn a_hull_from_a_model_falls_and_rests_and_a_missing_model_is_reported_once() {
         "no collider, no body: it does not move"
     );
 }
+
+/// A trigger zone: a ball falls through a sensor box as through air (free fall, exactly) and
+/// the zone's entity gets one `SensorEntered` and one `SensorExited` naming the ball; no
+/// contact event, and the ground the ball lands on below still raises its own.
+#[test]
+fn a_ball_falls_through_a_trigger_zone_which_reports_it_entering_and_leaving() {
+    let (host, events) = run(150, |ctx, frame| {
+        if frame == 0 {
+            ground(ctx);
+            ctx.spawn((
+                Name::new("zone"),
+                Transform::from_xyz(0.0, 5.0, 0.0),
+                RigidBody::fixed(),
+                Collider::cuboid(1.0, 1.0, 1.0).with_sensor(true),
+            ))
+            .unwrap();
+            ctx.spawn((
+                Name::new("ball"),
+                Transform::from_xyz(0.0, 10.0, 0.0),
+                RigidBody::dynamic(),
+                Collider::sphere(0.25),
+            ))
+            .unwrap();
+        }
+    });
+    let (ball, _) = host.find::<Transform>("ball").unwrap();
+    let (zone, _) = host.find::<Transform>("zone").unwrap();
+    let (ground, _) = host.find::<Transform>("ground").unwrap();
+    let sensor_events: Vec<_> = events
+        .iter()
+        .filter(|e| {
+            matches!(
+                e,
+                PhysicsEvent::SensorEntered { .. } | PhysicsEvent::SensorExited { .. }
+            )
+        })
+        .copied()
+        .collect();
+    assert_eq!(
+        sensor_events,
+        vec![
+            PhysicsEvent::SensorEntered {
+                sensor: zone,
+                other: ball
+            },
+            PhysicsEvent::SensorExited {
+                sensor: zone,
+                other: ball
+            },
+        ],
+        "{events:?}"
+    );
+    // Only the ground touched the ball.
+    for e in &events {
+        if let PhysicsEvent::ContactStarted { a, b, .. } = e {
+            assert!([*a, *b].contains(&ground), "a contact with the zone: {e:?}");
+        }
+    }
+    // It fell the whole 10 m − r to the ground: nothing in the zone held it.
+    let (_, t) = host.find::<Transform>("ball").unwrap();
+    assert!(
+        (t.translation.y - 0.25).abs() < 0.01,
+        "ball at {}",
+        t.translation
+    );
+}

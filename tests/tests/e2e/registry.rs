@@ -10,8 +10,8 @@ use onyx_plugin_api::glam::{Quat, Vec3};
 use onyx_plugin_api::tools::ComponentValue;
 use onyx_plugin_api::{
     AnimationId, Animator, BodyKind, Builtin, BuiltinFn, BuiltinId, BuiltinValue, Camera, Collider,
-    Ctx, Entity, FileRefs, Light, LockedAxes, Material, MeshId, MeshRenderer, Name, Parent,
-    RigidBody, ShadingMode, TextureId, Transform,
+    Ctx, Entity, FileRefs, Joint, JointMotor, JointTarget, Light, LockedAxes, Material, MeshId,
+    MeshRenderer, Name, Parent, RigidBody, ShadingMode, TextureId, Transform,
 };
 use onyx_runtime::HeadlessHost;
 
@@ -82,6 +82,18 @@ fn sample(id: BuiltinId, ctx: &mut Ctx, parent: Entity) -> BuiltinValue {
             .with_density(250.0)
             .with_restitution(0.4)
             .with_friction(0.8)
+            .with_groups(0b101, !0b10)
+            .with_sensor(true)
+            .into(),
+        BuiltinId::Joint => Joint::revolute(JointTarget::Body(parent), [0.0, 0.0, 1.0])
+            .with_anchors([0.5, 0.0, 0.0], [-0.5, 0.25, 0.0])
+            .with_limits(-0.5, 1.25)
+            .with_motor(JointMotor::Velocity {
+                speed: 2.0,
+                max_force: 30.0,
+            })
+            .with_spring(0.25, 3.0, 0.5)
+            .with_break(500.0, 0.0)
             .into(),
     }
 }
@@ -281,6 +293,7 @@ fn every_builtin_round_trips_through_a_play_mode_snapshot() {
             let changed = match id {
                 BuiltinId::Parent => Parent(other).into(),
                 BuiltinId::Name => Name::new("changed").into(),
+                BuiltinId::Joint => Joint::spherical(JointTarget::Body(other)).into(),
                 _ => id.tool_default().unwrap(),
             };
             ctx.set_builtin(*entity, changed).unwrap();

@@ -2,11 +2,19 @@
 //!
 //! - `physics_system.rs`: [`PhysicsSystem`], components → bodies → step → components;
 //!   `physics_reset.rs`: [`PhysicsSystem::reset`] when the world is replaced.
-//! - `scene_physics.rs`: [`ScenePhysics`], the preset and overrides a scene asks for.
+//! - `joint_links.rs`: `Joint` components → physics joints (made at the bodies' poses).
+//! - `scene_physics.rs`: [`ScenePhysics`], the preset and every setting a scene asks for.
+//! - `step_reports.rs`: the warnings a step raises (overloaded contacts, speed caps, far
+//!   bodies), logged once per entity.
 
+mod joint_links;
 mod physics_reset;
 mod physics_system;
 mod scene_physics;
+mod step_reports;
 
 pub use physics_system::PhysicsSystem;
-pub use scene_physics::{ScenePhysics, MAX_SCENE_FIXED_HZ, MAX_SCENE_SUBSTEPS};
+pub use scene_physics::{
+    ScenePhysics, MAX_SCENE_FIXED_HZ, MAX_SCENE_ITERATIONS, MAX_SCENE_SUBSTEPS,
+    SCENE_PHYSICS_FIELDS,
+};

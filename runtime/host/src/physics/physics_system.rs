@@ -4,15 +4,17 @@ use std::collections::HashMap;
 
 use onyx_physics::glam::{Affine3A, Quat, Vec3};
 use onyx_physics::{
-    BodyHandle, BodyType, ColliderDesc, ContactEventKind, MassProperties, PhysicsSettings,
-    PhysicsWorld, Pose, QueryFilter, RigidBodyDesc,
+    BodyHandle, BodyType, ColliderDesc, CollisionGroups, ContactEventKind, MassProperties,
+    PhysicsSettings, PhysicsWorld, Pose, QueryFilter, RigidBodyDesc,
 };
 use onyx_plugin_api::host::PhysicsCommand;
 use onyx_plugin_api::{
-    BodyKind, Collider, ColliderShape, Entity, Event, GraphicsEvent, PhysicsEvent, PlatformEvent,
-    RayHit, RigidBody, Transform,
+    BodyKind, Collider, ColliderShape, Entity, Event, GraphicsEvent, Joint, Name, PhysicsEvent,
+    PlatformEvent, RayHit, RigidBody, Transform,
 };
 
+use super::joint_links::JointLinks;
+use super::step_reports::{Named, StepReports};
 use super::ScenePhysics;
 use crate::assets::AssetRegistry;
 use crate::entity_id::{to_api, to_hecs};
@@ -59,6 +61,10 @@ pub struct PhysicsSystem {
     scene_physics: Option<ScenePhysics>,
     /// Counts syncs; a link not stamped with the current one has lost its entity.
     sync_epoch: u64,
+    /// What the steps reported that was already logged.
+    reports: StepReports,
+    /// The physics joints of `Joint` components.
+    joints: JointLinks,
 }
 
 impl std::fmt::Debug for PhysicsSystem {
@@ -128,6 +134,8 @@ impl PhysicsSystem {
             commands: Vec::new(),
             scene_physics: None,
             sync_epoch: 0,
+            reports: StepReports::default(),
+            joints: JointLinks::default(),
         }
     }
 
@@ -219,9 +227,26 @@ impl PhysicsSystem {
             self.commands.clear();
             return;
         }
+        self.joints.sync(&world.ecs, &mut self.world, |e| {
+            self.links.get(e).map(|l| l.body)
+        });
         self.apply_commands(events);
         self.world.settings_mut().dt = dt;
         let output = self.world.step().clone();
+        for broken in &output.broken_joints {
+            let Some(e) = self.joints.entity(broken.joint) else {
+                continue;
+            };
+            if let Ok(mut joint) = world.ecs.get::<&mut Joint>(e) {
+                joint.broken = true;
+            }
+            tracing::warn!(
+                entity = %to_api(e),
+                "physics: joint broke under {:.1} N, {:.1} N·m",
+                broken.force.length(),
+                broken.torque.length()
+            );
+        }
         for handle in &output.quarantined {
             if let Some(e) = self.entity_of.get(handle) {
                 events.push(Event::Platform(PlatformEvent::Error {
@@ -232,12 +257,33 @@ impl PhysicsSystem {
                 }));
             }
         }
+        let named = |h: BodyHandle| {
+            let entity = *self.entity_of.get(&h)?;
+            let name = world.ecs.get::<&Name>(entity).ok().map(|n| n.0.clone());
+            Some(Named { entity, name })
+        };
+        for line in self.reports.sentences(&output, named) {
+            tracing::warn!("{line}");
+        }
         let entity = |h: &BodyHandle| self.entity_of.get(h).or_else(|| self.departed.get(h));
         for contact in &output.events {
             let (Some(a), Some(b)) = (entity(&contact.body_a), entity(&contact.body_b)) else {
                 continue;
             };
             let (a, b) = (to_api(*a), to_api(*b));
+            if contact.sensor {
+                // The sensor is whichever collider is one (`a` when it is gone).
+                let b_is_sensor = self
+                    .world
+                    .collider(contact.collider_b)
+                    .is_some_and(onyx_physics::Collider::is_sensor);
+                let (sensor, other) = if b_is_sensor { (b, a) } else { (a, b) };
+                events.push(Event::Physics(match contact.kind {
+                    ContactEventKind::Started => PhysicsEvent::SensorEntered { sensor, other },
+                    ContactEventKind::Ended => PhysicsEvent::SensorExited { sensor, other },
+                }));
+                continue;
+            }
             events.push(Event::Physics(match contact.kind {
                 ContactEventKind::Started => PhysicsEvent::ContactStarted {
                     a,
@@ -311,7 +357,9 @@ impl PhysicsSystem {
             .density(collider.density)
             .restitution(collider.restitution)
             .static_friction(collider.static_friction)
-            .dynamic_friction(collider.friction))
+            .dynamic_friction(collider.friction)
+            .collision_groups(CollisionGroups::new(collider.memberships, collider.filter))
+            .sensor(collider.sensor))
     }
 
     /// Components → bodies in one pass over the simulated entities: builds new bodies,

@@ -23,6 +23,8 @@ pub struct ContactPair {
     /// carried a normal impulse during the step; cleared when no point carries impulse and
     /// all separations exceed the linear slop.
     pub touching: bool,
+    /// One of the colliders is a sensor: the pair reports overlap and is not solved.
+    pub sensor: bool,
     /// Combined restitution.
     pub restitution: f32,
     /// Combined static friction.

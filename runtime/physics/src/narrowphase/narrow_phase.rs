@@ -115,6 +115,7 @@ impl NarrowPhase {
         ma: &Material,
         mb: &Material,
         size: f32,
+        sensor: bool,
     ) -> bool {
         let k = key(ca, cb);
         if self.index.contains_key(&k) {
@@ -129,6 +130,7 @@ impl NarrowPhase {
             body_b: bb,
             manifolds: Vec::new(),
             touching: false,
+            sensor,
             restitution: e,
             static_friction: fs,
             dynamic_friction: fd,
@@ -165,6 +167,29 @@ impl NarrowPhase {
         let mut i = 0;
         while i < self.pairs.len() {
             if self.pairs[i].collider_a == c || self.pairs[i].collider_b == c {
+                let p = self.remove_at(i);
+                if p.touching {
+                    events.push(make_event(ContactEventKind::Ended, &p, bodies, 0.0));
+                }
+            } else {
+                i += 1;
+            }
+        }
+    }
+
+    /// Removes every pair between bodies `a` and `b` (a joint now keeps them from colliding),
+    /// reporting `Ended` for touching ones.
+    pub(crate) fn remove_pairs_between(
+        &mut self,
+        a: BodyHandle,
+        b: BodyHandle,
+        bodies: &BodySet,
+        events: &mut Vec<ContactEvent>,
+    ) {
+        let mut i = 0;
+        while i < self.pairs.len() {
+            let p = &self.pairs[i];
+            if (p.body_a == a && p.body_b == b) || (p.body_a == b && p.body_b == a) {
                 let p = self.remove_at(i);
                 if p.touching {
                     events.push(make_event(ContactEventKind::Ended, &p, bodies, 0.0));
@@ -597,5 +622,6 @@ pub(crate) fn make_event(
         normal,
         points,
         impulse,
+        sensor: p.sensor,
     }
 }

@@ -21,7 +21,12 @@ impl PhysicsWorld {
             ) else {
                 continue;
             };
-            if ca.parent == cb.parent {
+            if ca.parent == cb.parent
+                || !ca.groups.interacts_with(cb.groups)
+                || self
+                    .joints
+                    .keeps_apart(ca.parent.index(), cb.parent.index())
+            {
                 continue;
             }
             let (Some(ba), Some(bb)) = (self.bodies.get(ca.parent), self.bodies.get(cb.parent))
@@ -41,6 +46,7 @@ impl PhysicsWorld {
                 &ca.material,
                 &cb.material,
                 ca.shape.size().min(cb.shape.size()),
+                ca.sensor || cb.sensor,
             ) {
                 added += 1;
             }

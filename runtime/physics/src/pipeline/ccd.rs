@@ -172,6 +172,9 @@ pub(crate) fn sweep_body(
         let Some(c) = colliders.get(ch) else {
             continue;
         };
+        if c.sensor {
+            continue;
+        }
         let Some((core, radius)) = c.shape.convex_core() else {
             continue;
         };
@@ -197,7 +200,7 @@ pub(crate) fn sweep_body(
             let Some(other) = colliders.arena.get_by_index(data) else {
                 return true;
             };
-            if other.parent == body {
+            if other.parent == body || other.sensor {
                 return true;
             }
             let Some(other_motion) = motion_of(other.parent) else {

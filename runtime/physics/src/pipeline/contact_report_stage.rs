@@ -45,7 +45,8 @@ impl PhysicsWorld {
                     .events
                     .push(make_event(ContactEventKind::Ended, p, &self.bodies, 0.0));
             }
-            if p.touching {
+            // A sensor's overlap neither grounds a body nor gives it a contact normal.
+            if p.touching && !p.sensor {
                 self.report_pairs.push(i);
             }
         }

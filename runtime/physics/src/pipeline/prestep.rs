@@ -70,6 +70,7 @@ impl PhysicsWorld {
                 }
             }
         }
+        self.wake_jointed();
     }
 
     /// Rolls the body back to its last finite pose, zeroes its motion and disables it.

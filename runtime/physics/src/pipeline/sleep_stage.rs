@@ -42,6 +42,16 @@ impl PhysicsWorld {
                 parent[ra.max(rb) as usize] = ra.min(rb);
             }
         }
+        // Jointed dynamic bodies sleep and wake together.
+        for c in &self.joint_constraints {
+            if c.writes != 3 {
+                continue;
+            }
+            let (ra, rb) = (find(&mut parent, c.body_a), find(&mut parent, c.body_b));
+            if ra != rb {
+                parent[ra.max(rb) as usize] = ra.min(rb);
+            }
+        }
         // Update timers; island minimum.
         let mut island_min = vec![f32::MAX; n];
         for k in 1..n {

@@ -171,6 +171,7 @@ impl PhysicsWorld {
             });
         }
         self.output.counters.awake_bodies = (self.solver_bodies.len() - 1) as u32;
+        self.prepare_joints(h);
 
         // Manifolds: which the solver takes and which bodies they write; each is prepared
         // when its batch is packed.
@@ -184,7 +185,7 @@ impl PhysicsWorld {
         let mut bouncy = false;
         for &pi in &self.narrowphase.updated_pairs {
             let pair = &self.narrowphase.pairs[pi as usize];
-            if pair.manifolds.is_empty() {
+            if pair.manifolds.is_empty() || pair.sensor {
                 continue;
             }
             // Compact per-body slots, not the bodies themselves: this loop visits every pair.
@@ -396,8 +397,10 @@ impl PhysicsWorld {
             &mut self.solver_bodies,
             &mut self.solver_states,
             &mut self.contact_batches,
+            &mut self.joint_constraints,
             &params,
         );
+        self.finish_joints();
 
         let decay = 0.5f32.powf(s.dt / LOAD_MEMORY_HALF_LIFE);
         // Store impulses for warm starting and events; a manifold's friction is shared among

@@ -3,6 +3,7 @@
 use crate::body_handle::BodyHandle;
 use crate::body_type::BodyType;
 use crate::collider::Collider;
+use crate::collision_groups::CollisionGroups;
 use crate::rigid_body::RigidBody;
 
 /// Filter for scene queries. `Default` accepts everything.
@@ -14,13 +15,17 @@ pub struct QueryFilter {
     pub exclude_static: bool,
     /// Skip dynamic bodies.
     pub exclude_dynamic: bool,
+    /// Only colliders these groups interact with ([`CollisionGroups::interacts_with`]).
+    pub groups: Option<CollisionGroups>,
 }
 
 impl QueryFilter {
     /// True when the collider passes.
     #[must_use]
     pub fn accepts(&self, c: &Collider, body: Option<&RigidBody>) -> bool {
-        if self.exclude_body == Some(c.parent) {
+        if self.exclude_body == Some(c.parent)
+            || self.groups.is_some_and(|g| !g.interacts_with(c.groups))
+        {
             return false;
         }
         match body.map(|b| b.body_type) {

@@ -6,6 +6,7 @@ pub(crate) mod contact_batch;
 pub(crate) mod contact_constraint;
 pub(crate) mod face_contact;
 pub mod free_rotation;
+pub(crate) mod joint_constraint;
 pub(crate) mod lanes;
 pub(crate) mod noise;
 pub mod restitution;

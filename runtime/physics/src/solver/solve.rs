@@ -7,6 +7,7 @@ use super::batching::ContactBatches;
 use super::body_state::BodyState;
 use super::contact_batch::Pass;
 use super::free_rotation::free_rotation_step;
+use super::joint_constraint::JointConstraint;
 use super::solver_body::{SolverBody, CAPPED_ANGULAR, CAPPED_LINEAR};
 use crate::pose::unit_rotation;
 
@@ -32,12 +33,14 @@ pub(crate) struct SolveParams {
     pub max_angular_speed: f32,
 }
 
-/// Runs all substeps over awake bodies and their contact batches. Returns how many
-/// free-rotation solves missed their tolerance (see [`free_rotation_step`]).
+/// Runs all substeps over awake bodies, their joints and their contact batches (joints
+/// before contacts in each pass, as Box2D v3 orders them). Returns how many free-rotation
+/// solves missed their tolerance (see [`free_rotation_step`]).
 pub(crate) fn solve_substeps(
     bodies: &mut [SolverBody],
     states: &mut [BodyState],
     batches: &mut ContactBatches,
+    joints: &mut [JointConstraint],
     p: &SolveParams,
 ) -> u32 {
     let mut not_converged = 0;
@@ -54,12 +57,21 @@ pub(crate) fn solve_substeps(
     };
     for _ in 0..substeps {
         integrate_velocities(bodies, states, h);
+        for j in joints.iter() {
+            j.warm_start(bodies, states);
+        }
         batches.warm_start(states);
         for _ in 0..p.iterations.max(1) {
+            for j in joints.iter_mut() {
+                j.solve(bodies, states, true);
+            }
             batches.solve(states, solve_pass);
         }
         not_converged += integrate_positions(bodies, states, h, p);
         for _ in 0..p.relax_iterations {
+            for j in joints.iter_mut() {
+                j.solve(bodies, states, false);
+            }
             batches.solve(states, relax_pass);
         }
     }

@@ -85,7 +85,9 @@ pub struct HostArgs {
     #[arg(long, value_name = "HZ")]
     pub fixed_hz: Option<f64>,
     /// Physics accuracy preset, instead of the scene's: fast (30 Hz x 2 substeps), balanced
-    /// (60 Hz x 4) or precise (120 Hz x 4). See docs/physics-accuracy.md.
+    /// (60 Hz x 4) or precise (120 Hz x 4). It sets the step rate and substeps only; the
+    /// scene's other physics settings (gravity, thresholds, caps) stay. See
+    /// docs/physics-accuracy.md.
     #[arg(long, value_name = "PRESET")]
     pub physics: Option<onyx_runtime::PhysicsPreset>,
     /// Most fixed steps per frame (the spiral-of-death guard).

@@ -117,10 +117,11 @@ fn start_host(args: &HostArgs, libraries: &[std::path::PathBuf]) -> Result<Host,
         host.load_scene(scene)
             .map_err(|e| Failure::Start(anyhow::Error::new(e)))?;
     }
-    // The command line wins over the scene: its preset replaces the scene's, its rate
-    // overrides either.
+    // The command line wins over the scene: its preset replaces the scene's step rate and
+    // substeps (and nothing else the scene sets), its rate overrides either.
     let chosen = match (args.physics, host.physics().scene_physics()) {
-        (Some(preset), _) => Some(ScenePhysics::preset(preset)),
+        (Some(preset), Some(from_scene)) => Some(from_scene.with_preset(preset)),
+        (Some(preset), None) => Some(ScenePhysics::preset(preset)),
         (None, Some(from_scene)) => Some(from_scene.clone()),
         (None, None) => None,
     };

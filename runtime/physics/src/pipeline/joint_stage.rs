@@ -1,0 +1,205 @@
+//! Joints in the step: sleeping partners woken (pre-step), joints prepared for the solver
+//! (solve stage, after the bodies), impulses stored and breaks found (after the substeps).
+
+use glam::{Quat, Vec3, Vec3A};
+
+use crate::body_handle::BodyHandle;
+use crate::body_type::BodyType;
+use crate::broken_joint::BrokenJoint;
+use crate::joint_desc::JointKind;
+use crate::joint_handle::JointHandle;
+use crate::physics_world::PhysicsWorld;
+use crate::pose::Pose;
+use crate::solver::joint_constraint::{drive_softness, JointConstraint};
+use crate::solver::Softness;
+
+/// Joint stiffness never goes above this fraction of the substep rate, 1/s per Hz (Box2D
+/// v3 runs joints at twice its contact stiffness, itself at most a quarter of the substep
+/// rate). Bounded `(0, ∞)`: the soft step is stable at any stiffness; past about one period
+/// per two substeps a joint is as good as rigid and more only adds rounding.
+pub const JOINT_STIFFNESS_MAX_SUBSTEP_FRACTION: f32 = 0.5;
+
+/// One side of a joint at the step start.
+struct Side {
+    /// Solver index (0: static, asleep, or the world).
+    index: u32,
+    dynamic: bool,
+    /// Centre of mass (the anchor, for the world), world space.
+    center: Vec3,
+    /// Anchor offset from the centre of mass, world axes.
+    r: Vec3,
+    /// Joint frame in world axes.
+    frame: Quat,
+}
+
+impl PhysicsWorld {
+    /// Wakes every sleeping dynamic body jointed to an awake one, until none is left
+    /// (bodies that slept together are one island already; this catches joints added
+    /// between islands).
+    pub(crate) fn wake_jointed(&mut self) {
+        if self.joints.is_empty() {
+            return;
+        }
+        loop {
+            let mut woken: Vec<BodyHandle> = Vec::new();
+            let awake = |h: BodyHandle| {
+                self.active_flags
+                    .get(h.index() as usize)
+                    .copied()
+                    .unwrap_or(false)
+                    && self.bodies.get(h).is_some()
+            };
+            let asleep = |h: BodyHandle| {
+                self.bodies
+                    .get(h)
+                    .is_some_and(|b| b.sleeping && b.body_type == BodyType::Dynamic)
+            };
+            for (_, j) in self.joints.iter() {
+                let Some(a) = j.body_a else {
+                    continue;
+                };
+                if j.broken {
+                    continue;
+                }
+                let b = j.body_b;
+                if awake(a) && asleep(b) {
+                    woken.push(b);
+                } else if awake(b) && asleep(a) {
+                    woken.push(a);
+                }
+            }
+            if woken.is_empty() {
+                return;
+            }
+            for h in woken {
+                self.wake_island(h);
+            }
+        }
+    }
+
+    /// Builds the step's joint constraints from the joints whose bodies take part (after the
+    /// solver bodies are set up).
+    pub(crate) fn prepare_joints(&mut self, h: f32) {
+        self.joint_constraints.clear();
+        if self.joints.is_empty() {
+            return;
+        }
+        let s = self.settings;
+        let softness = Softness::new(
+            s.joint_hertz.min(JOINT_STIFFNESS_MAX_SUBSTEP_FRACTION / h),
+            s.joint_damping_ratio,
+            h,
+        );
+        let side = |body: Option<BodyHandle>, frame: &Pose| -> Option<Side> {
+            let Some(handle) = body else {
+                return Some(Side {
+                    index: 0,
+                    dynamic: false,
+                    center: frame.translation,
+                    r: Vec3::ZERO,
+                    frame: frame.rotation,
+                });
+            };
+            let b = self.bodies.get(handle)?;
+            let slot = self.solver_slots.get(handle.index() as usize).copied();
+            let (index, dynamic) = match slot {
+                Some(slot) if b.solver_index != 0 => (slot.index, slot.dynamic),
+                _ => (0, false),
+            };
+            let q = b.pose.rotation;
+            Some(Side {
+                index,
+                dynamic,
+                center: b.pose.transform_point(b.mass.local_com),
+                r: q * (frame.translation - b.mass.local_com),
+                frame: q * frame.rotation,
+            })
+        };
+        for (i, _, joint) in self.joints.arena.iter() {
+            if joint.broken {
+                continue;
+            }
+            let (Some(a), Some(b)) = (
+                side(joint.body_a, &joint.desc.frame_a),
+                side(Some(joint.body_b), &joint.desc.frame_b),
+            ) else {
+                continue;
+            };
+            if !(a.dynamic || b.dynamic) {
+                continue;
+            }
+            let mass = |side: &Side| {
+                if side.index == 0 {
+                    (Vec3A::ZERO, glam::Mat3A::ZERO)
+                } else {
+                    (
+                        self.solver_states[side.index as usize].inv_mass,
+                        glam::Mat3A::from(self.solver_bodies[side.index as usize].inv_i),
+                    )
+                }
+            };
+            let ((inv_mass_a, inv_i_a), (inv_mass_b, inv_i_b)) = (mass(&a), mass(&b));
+            let (spring, motor) = match joint.desc.kind {
+                JointKind::Revolute { spring, motor, .. }
+                | JointKind::Prismatic { spring, motor, .. } => (spring, motor),
+                JointKind::Distance { spring, .. } => (spring, None),
+                JointKind::Fixed | JointKind::Spherical { .. } => (None, None),
+            };
+            let (spring_softness, motor_softness) = drive_softness(spring, motor, h);
+            self.joint_constraints.push(JointConstraint {
+                joint: i,
+                body_a: a.index,
+                body_b: b.index,
+                writes: u8::from(a.dynamic) | u8::from(b.dynamic) << 1,
+                inv_mass_a,
+                inv_mass_b,
+                inv_i_a,
+                inv_i_b,
+                r_a0: a.r.into(),
+                r_b0: b.r.into(),
+                frame_a0: a.frame,
+                frame_b0: b.frame,
+                delta_center: (b.center - a.center).into(),
+                kind: joint.desc.kind,
+                softness,
+                spring_softness,
+                motor_softness,
+                inv_h: 1.0 / h,
+                h,
+                impulses: joint.impulses,
+            });
+        }
+        self.output.counters.joints = self.joint_constraints.len() as u32;
+    }
+
+    /// Stores each joint's impulses (warm start of the next step) and reaction, and breaks
+    /// the joints whose force or torque passed their threshold (reported once).
+    pub(crate) fn finish_joints(&mut self) {
+        for c in &self.joint_constraints {
+            let (force, torque) = c.reaction(&self.solver_bodies, &self.solver_states);
+            let Some(joint) = self.joints.arena.get_by_index_mut(c.joint) else {
+                continue;
+            };
+            joint.impulses = c.impulses;
+            joint.force = force;
+            joint.torque = torque;
+            let broke = force.length() > joint.desc.break_force
+                || torque.length() > joint.desc.break_torque;
+            if !broke {
+                continue;
+            }
+            joint.broken = true;
+            joint.impulses = Default::default();
+            let (a, b, apart) = (joint.body_a, joint.body_b, !joint.desc.collide_connected);
+            let handle = JointHandle::from_parts(c.joint, self.joints.arena.generation_of(c.joint));
+            self.output.broken_joints.push(BrokenJoint {
+                joint: handle,
+                force,
+                torque,
+            });
+            if apart {
+                self.joints.count_no_collide(a, b, false);
+            }
+        }
+    }
+}

@@ -1,0 +1,617 @@
+//! [`JointConstraint`]: one joint's rows for a step, solved in the soft-step substeps with the
+//! contacts (warm start, biased solve, relax; Box2D v3's soft step, in 3-D).
+//!
+//! A joint is a few groups of rows, each a velocity constraint `J v = 0` on the two bodies:
+//! - the **linear block**: the anchor point (3 rows, world axes), a slider's line (2 rows
+//!   across its axis) or a rod's length (1 row), solved together (`K = J M⁻¹ Jᵀ`, up to 3×3);
+//! - the **angular block**: a weld's or slider's orientation (3 rows, world axes) or a
+//!   hinge's axis (2 rows across it), solved together;
+//! - the **free axis** (hinge angle, slider translation, distance, ball twist): a spring, a
+//!   motor bounded by its force, and lower/upper limits, each one row;
+//! - a ball joint's **cone** limit (one row about the axis of the swing).
+//!
+//! Rows are solved drives → limits → angular block → linear block (the hard rows last, so
+//! they win). Block and limit rows are soft while the biased passes correct position error
+//! (`PhysicsSettings::joint_hertz`, `joint_damping_ratio`) and rigid in the relax passes;
+//! limits are speculative, like contacts: a limit not yet reached lets the coordinate
+//! approach it by exactly the remaining gap in a substep. Springs and position motors use
+//! their own stiffness.
+//!
+//! Geometry is relative, as for contacts: each body's anchor offset from its centre of mass
+//! and its joint frame are taken at the step start and turned by the body's rotation since
+//! then; the anchors' separation is `Δc + Δp_b − Δp_a + r_b − r_a` with `Δc` the centres'
+//! offset at the step start, so precision does not depend on the distance from the origin.
+
+use glam::{Mat3A, Quat, Vec3, Vec3A};
+
+use super::body_state::BodyState;
+use super::softness::Softness;
+use super::solver_body::SolverBody;
+use crate::joint::JointImpulses;
+use crate::joint_desc::{JointKind, JointLimits, JointMotor, JointSpring, MotorTarget};
+
+/// A pivot of a block below this share of the block's largest diagonal is taken as a row
+/// the bodies cannot move along (locked axes, two static sides) and dropped from the solve.
+pub const BLOCK_PIVOT_EPSILON: f32 = 1e-6;
+
+/// Anchors closer than this, metres, give a distance joint no direction: its rows skip the
+/// substep.
+pub const MIN_DISTANCE_JOINT_LENGTH: f32 = 1e-6;
+
+/// One row: the Jacobian `[−lin, −ang_a, lin, ang_b]` (body A's parts negated).
+#[derive(Clone, Copy, Debug, Default)]
+struct Row {
+    lin: Vec3A,
+    ang_a: Vec3A,
+    ang_b: Vec3A,
+}
+
+impl Row {
+    fn angular(axis: Vec3A) -> Self {
+        Self {
+            lin: Vec3A::ZERO,
+            ang_a: axis,
+            ang_b: axis,
+        }
+    }
+
+    /// A linear row along `u` between anchors at `ra` and `rb` from the centres of mass.
+    fn linear(u: Vec3A, ra: Vec3A, rb: Vec3A) -> Self {
+        Self {
+            lin: u,
+            ang_a: ra.cross(u),
+            ang_b: rb.cross(u),
+        }
+    }
+
+    fn negated(self) -> Self {
+        Self {
+            lin: -self.lin,
+            ang_a: -self.ang_a,
+            ang_b: -self.ang_b,
+        }
+    }
+}
+
+/// The two bodies' velocities while a joint is solved.
+#[derive(Clone, Copy, Debug)]
+struct Velocities {
+    va: Vec3A,
+    wa: Vec3A,
+    vb: Vec3A,
+    wb: Vec3A,
+}
+
+/// Soft-row coefficients for one pass: the Box2D v3 soft step, or rigid.
+#[derive(Clone, Copy, Debug)]
+struct Coeffs {
+    bias_rate: f32,
+    mass_scale: f32,
+    impulse_scale: f32,
+}
+
+const RIGID: Coeffs = Coeffs {
+    bias_rate: 0.0,
+    mass_scale: 1.0,
+    impulse_scale: 0.0,
+};
+
+impl From<Softness> for Coeffs {
+    fn from(s: Softness) -> Self {
+        Self {
+            bias_rate: s.bias_rate,
+            mass_scale: s.mass_scale,
+            impulse_scale: s.impulse_scale,
+        }
+    }
+}
+
+/// Every row of a joint at the current substep, with the position error of each.
+#[derive(Clone, Copy, Debug, Default)]
+struct Rows {
+    /// The free axis and its coordinate (absent for a weld, or a rod with no direction).
+    axis: Option<(Row, f32)>,
+    /// A ball joint's cone: its row and the remaining angle `cone − swing`.
+    cone: Option<(Row, f32)>,
+    lin: [Row; 3],
+    lin_c: [f32; 3],
+    n_lin: usize,
+    ang: [Row; 3],
+    ang_c: [f32; 3],
+    n_ang: usize,
+}
+
+/// A joint prepared for one step (see the module docs).
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct JointConstraint {
+    /// Arena index of the joint (its impulses are written back there).
+    pub joint: u32,
+    /// Solver indices of the bodies (0: static, asleep or the world).
+    pub body_a: u32,
+    pub body_b: u32,
+    /// Bit 0: the solver writes A's velocities; bit 1: B's.
+    pub writes: u8,
+    pub inv_mass_a: Vec3A,
+    pub inv_mass_b: Vec3A,
+    pub inv_i_a: Mat3A,
+    pub inv_i_b: Mat3A,
+    /// Anchor offsets from each centre of mass at the step start, world axes.
+    pub r_a0: Vec3A,
+    pub r_b0: Vec3A,
+    /// Joint frames in world axes at the step start.
+    pub frame_a0: Quat,
+    pub frame_b0: Quat,
+    /// `c_b − c_a` at the step start (centres of mass; the world side's anchor).
+    pub delta_center: Vec3A,
+    pub kind: JointKind,
+    /// The position rows' softness (`joint_hertz`, `joint_damping_ratio`).
+    pub softness: Softness,
+    /// The spring's and the position motor's softness.
+    pub spring_softness: Softness,
+    pub motor_softness: Softness,
+    pub inv_h: f32,
+    pub h: f32,
+    pub impulses: JointImpulses,
+}
+
+/// The angle of `q` about X, in (−π, π] (the twist of a swing–twist decomposition).
+fn twist_angle(q: Quat) -> f32 {
+    let q = if q.w < 0.0 { -q } else { q };
+    2.0 * q.x.atan2(q.w)
+}
+
+/// `a − b` wrapped into (−π, π].
+fn angle_difference(a: f32, b: f32) -> f32 {
+    let tau = std::f32::consts::TAU;
+    let d = (a - b).rem_euclid(tau);
+    if d > std::f32::consts::PI {
+        d - tau
+    } else {
+        d
+    }
+}
+
+/// Solves `K x = b` for a symmetric positive semi-definite `K` of `n ≤ 3` rows by `LDLᵀ`,
+/// dropping rows whose pivot is below [`BLOCK_PIVOT_EPSILON`] of the largest diagonal (their
+/// `x` is 0).
+fn solve_block(k: &[[f32; 3]; 3], b: [f32; 3], n: usize) -> [f32; 3] {
+    let scale = (0..n).map(|i| k[i][i]).fold(0.0f32, f32::max);
+    let mut l = [[0.0f32; 3]; 3];
+    let mut d = [0.0f32; 3];
+    let eps = BLOCK_PIVOT_EPSILON * scale;
+    for j in 0..n {
+        let mut dj = k[j][j];
+        for m in 0..j {
+            dj -= l[j][m] * l[j][m] * d[m];
+        }
+        d[j] = if dj > eps { dj } else { 0.0 };
+        for i in j + 1..n {
+            let mut lij = k[i][j];
+            for m in 0..j {
+                lij -= l[i][m] * l[j][m] * d[m];
+            }
+            l[i][j] = if d[j] > 0.0 { lij / d[j] } else { 0.0 };
+        }
+    }
+    // L y = b, D z = y, Lᵀ x = z.
+    let mut y = [0.0f32; 3];
+    for i in 0..n {
+        let mut s = b[i];
+        for m in 0..i {
+            s -= l[i][m] * y[m];
+        }
+        y[i] = s;
+    }
+    let mut x = [0.0f32; 3];
+    for i in (0..n).rev() {
+        let mut s = if d[i] > 0.0 { y[i] / d[i] } else { 0.0 };
+        for m in i + 1..n {
+            s -= l[m][i] * x[m];
+        }
+        x[i] = if d[i] > 0.0 { s } else { 0.0 };
+    }
+    x
+}
+
+impl JointConstraint {
+    fn cdot(&self, r: &Row, v: &Velocities) -> f32 {
+        r.lin.dot(v.vb - v.va) + r.ang_b.dot(v.wb) - r.ang_a.dot(v.wa)
+    }
+
+    fn apply(&self, r: &Row, impulse: f32, v: &mut Velocities) {
+        v.va -= self.inv_mass_a * r.lin * impulse;
+        v.wa -= self.inv_i_a * r.ang_a * impulse;
+        v.vb += self.inv_mass_b * r.lin * impulse;
+        v.wb += self.inv_i_b * r.ang_b * impulse;
+    }
+
+    /// `J₁ M⁻¹ J₂ᵀ`.
+    fn k(&self, r1: &Row, r2: &Row) -> f32 {
+        r1.lin.dot((self.inv_mass_a + self.inv_mass_b) * r2.lin)
+            + r1.ang_a.dot(self.inv_i_a * r2.ang_a)
+            + r1.ang_b.dot(self.inv_i_b * r2.ang_b)
+    }
+
+    fn load(&self, states: &[BodyState]) -> Velocities {
+        let (a, b) = (&states[self.body_a as usize], &states[self.body_b as usize]);
+        Velocities {
+            va: a.v,
+            wa: a.w,
+            vb: b.v,
+            wb: b.w,
+        }
+    }
+
+    fn store(&self, states: &mut [BodyState], v: &Velocities) {
+        if self.writes & 1 != 0 {
+            let a = &mut states[self.body_a as usize];
+            a.v = v.va;
+            a.w = v.wa;
+        }
+        if self.writes & 2 != 0 {
+            let b = &mut states[self.body_b as usize];
+            b.v = v.vb;
+            b.w = v.wb;
+        }
+    }
+
+    /// The rows at the bodies' current poses (`dq`, `dp` of the substep).
+    fn rows(&self, bodies: &[SolverBody], states: &[BodyState]) -> Rows {
+        let (qa, qb) = (
+            bodies[self.body_a as usize].dq,
+            bodies[self.body_b as usize].dq,
+        );
+        let ra = qa * self.r_a0;
+        let rb = qb * self.r_b0;
+        let d = self.delta_center
+            + (states[self.body_b as usize].dp - states[self.body_a as usize].dp)
+            + (rb - ra);
+        let fa = qa * self.frame_a0;
+        let fb = qb * self.frame_b0;
+        let ax = Vec3A::from(fa * Vec3::X);
+        let mut rows = Rows::default();
+        let point = |rows: &mut Rows| {
+            for (i, e) in [Vec3A::X, Vec3A::Y, Vec3A::Z].into_iter().enumerate() {
+                rows.lin[i] = Row::linear(e, ra, rb);
+                rows.lin_c[i] = d[i];
+            }
+            rows.n_lin = 3;
+        };
+        let weld = |rows: &mut Rows| {
+            let e = fb * fa.inverse();
+            let e = if e.w < 0.0 { -e } else { e };
+            let c = 2.0 * Vec3A::new(e.x, e.y, e.z);
+            for (i, axis) in [Vec3A::X, Vec3A::Y, Vec3A::Z].into_iter().enumerate() {
+                rows.ang[i] = Row::angular(axis);
+                rows.ang_c[i] = c[i];
+            }
+            rows.n_ang = 3;
+        };
+        match self.kind {
+            JointKind::Fixed => {
+                weld(&mut rows);
+                point(&mut rows);
+            }
+            JointKind::Revolute { .. } => {
+                rows.axis = Some((Row::angular(ax), twist_angle(fa.inverse() * fb)));
+                let bx = Vec3A::from(fb * Vec3::X);
+                let c = ax.cross(bx);
+                for (i, t) in [fa * Vec3::Y, fa * Vec3::Z].into_iter().enumerate() {
+                    let t = Vec3A::from(t);
+                    rows.ang[i] = Row::angular(t);
+                    rows.ang_c[i] = t.dot(c);
+                }
+                rows.n_ang = 2;
+                point(&mut rows);
+            }
+            JointKind::Prismatic { .. } => {
+                // The axis and its cross axes turn with A: their rows take the lever `ra + d`.
+                let lever = ra + d;
+                rows.axis = Some((Row::linear(ax, lever, rb), ax.dot(d)));
+                weld(&mut rows);
+                for (i, t) in [fa * Vec3::Y, fa * Vec3::Z].into_iter().enumerate() {
+                    let t = Vec3A::from(t);
+                    rows.lin[i] = Row::linear(t, lever, rb);
+                    rows.lin_c[i] = t.dot(d);
+                }
+                rows.n_lin = 2;
+            }
+            JointKind::Spherical { cone, .. } => {
+                let bx = Vec3A::from(fb * Vec3::X);
+                let mid = (ax + bx).normalize_or_zero();
+                let twist_axis = if mid == Vec3A::ZERO { bx } else { mid };
+                rows.axis = Some((Row::angular(twist_axis), twist_angle(fa.inverse() * fb)));
+                if let Some(cone) = cone {
+                    let n = ax.cross(bx);
+                    let sin = n.length();
+                    if sin > 1e-6 {
+                        let swing = ax.dot(bx).clamp(-1.0, 1.0).acos();
+                        // d(swing)/dt = n̂·(w_b − w_a): the row is −n̂.
+                        rows.cone = Some((Row::angular(-n / sin), cone - swing));
+                    }
+                }
+                point(&mut rows);
+            }
+            JointKind::Distance { min, max, .. } => {
+                let length = d.length();
+                if length > MIN_DISTANCE_JOINT_LENGTH {
+                    let row = Row::linear(d / length, ra, rb);
+                    if min == max {
+                        rows.lin[0] = row;
+                        rows.lin_c[0] = length - min;
+                        rows.n_lin = 1;
+                    } else {
+                        rows.axis = Some((row, length));
+                    }
+                }
+            }
+        }
+        rows
+    }
+
+    /// Applies last substep's impulses (Box2D v3 warm start), at the current geometry.
+    pub(crate) fn warm_start(&self, bodies: &[SolverBody], states: &mut [BodyState]) {
+        let rows = self.rows(bodies, states);
+        let mut v = self.load(states);
+        let im = &self.impulses;
+        if let Some((axis, _)) = rows.axis {
+            self.apply(&axis, im.spring + im.motor + im.lower - im.upper, &mut v);
+        }
+        if let Some((cone, _)) = rows.cone {
+            self.apply(&cone, im.cone, &mut v);
+        }
+        for i in 0..rows.n_ang {
+            self.apply(&rows.ang[i], im.angular[i], &mut v);
+        }
+        for i in 0..rows.n_lin {
+            self.apply(&rows.lin[i], im.linear[i], &mut v);
+        }
+        self.store(states, &v);
+    }
+
+    /// One Gauss–Seidel pass over the joint's rows: biased (`use_bias`, position error fed
+    /// back softly) or relaxing (rigid, no bias).
+    pub(crate) fn solve(
+        &mut self,
+        bodies: &[SolverBody],
+        states: &mut [BodyState],
+        use_bias: bool,
+    ) {
+        let rows = self.rows(bodies, states);
+        let mut v = self.load(states);
+        let soft = if use_bias {
+            Coeffs::from(self.softness)
+        } else {
+            RIGID
+        };
+        let (limits, motor, spring, angular) = match self.kind {
+            JointKind::Revolute {
+                limits,
+                motor,
+                spring,
+            } => (limits, motor, spring, true),
+            JointKind::Prismatic {
+                limits,
+                motor,
+                spring,
+            } => (limits, motor, spring, false),
+            JointKind::Spherical { twist, .. } => (twist, None, None, true),
+            JointKind::Distance { min, max, spring } => (
+                Some(JointLimits {
+                    lower: min,
+                    upper: max,
+                }),
+                None,
+                spring,
+                false,
+            ),
+            JointKind::Fixed => (None, None, None, false),
+        };
+        if let Some((axis, x)) = rows.axis {
+            let error = |target: f32| {
+                if angular {
+                    angle_difference(x, target)
+                } else {
+                    x - target
+                }
+            };
+            if let Some(s) = spring {
+                self.spring_row(&axis, error(s.rest), &mut v);
+            }
+            if let Some(m) = motor {
+                self.motor_row(&axis, m, &error, &mut v);
+            }
+            if let Some(l) = limits {
+                // A rope's lower bound of 0 never acts.
+                if !(matches!(self.kind, JointKind::Distance { .. }) && l.lower <= 0.0) {
+                    let mut lower = self.impulses.lower;
+                    self.limit_row(&axis, x - l.lower, &mut lower, soft, &mut v);
+                    self.impulses.lower = lower;
+                }
+                let mut upper = self.impulses.upper;
+                self.limit_row(&axis.negated(), l.upper - x, &mut upper, soft, &mut v);
+                self.impulses.upper = upper;
+            }
+        }
+        if let Some((cone, c)) = rows.cone {
+            let mut acc = self.impulses.cone;
+            self.limit_row(&cone, c, &mut acc, soft, &mut v);
+            self.impulses.cone = acc;
+        }
+        let mut ang = self.impulses.angular;
+        self.block(&rows.ang, rows.ang_c, rows.n_ang, &mut ang, soft, &mut v);
+        self.impulses.angular = ang;
+        let mut lin = self.impulses.linear;
+        self.block(&rows.lin, rows.lin_c, rows.n_lin, &mut lin, soft, &mut v);
+        self.impulses.linear = lin;
+        self.store(states, &v);
+    }
+
+    /// A block of `n` equality rows with position errors `c`, solved together.
+    fn block(
+        &self,
+        rows: &[Row; 3],
+        c: [f32; 3],
+        n: usize,
+        acc: &mut [f32; 3],
+        soft: Coeffs,
+        v: &mut Velocities,
+    ) {
+        if n == 0 {
+            return;
+        }
+        let mut k = [[0.0f32; 3]; 3];
+        let mut rhs = [0.0f32; 3];
+        for i in 0..n {
+            for j in i..n {
+                let kij = self.k(&rows[i], &rows[j]);
+                k[i][j] = kij;
+                k[j][i] = kij;
+            }
+            rhs[i] = self.cdot(&rows[i], v) + soft.bias_rate * c[i];
+        }
+        let x = solve_block(&k, rhs, n);
+        for i in 0..n {
+            let impulse = -soft.mass_scale * x[i] - soft.impulse_scale * acc[i];
+            acc[i] += impulse;
+            self.apply(&rows[i], impulse, v);
+        }
+    }
+
+    fn mass(&self, r: &Row) -> f32 {
+        let k = self.k(r, r);
+        if k > 0.0 {
+            1.0 / k
+        } else {
+            0.0
+        }
+    }
+
+    /// A spring toward the rest coordinate (`error` = coordinate − rest), both passes.
+    fn spring_row(&mut self, r: &Row, error: f32, v: &mut Velocities) {
+        let s = Coeffs::from(self.spring_softness);
+        let m = self.mass(r);
+        let impulse = -m * s.mass_scale * (self.cdot(r, v) + s.bias_rate * error)
+            - s.impulse_scale * self.impulses.spring;
+        self.impulses.spring += impulse;
+        self.apply(r, impulse, v);
+    }
+
+    /// A motor toward a speed or a coordinate, its accumulated impulse bounded by its force.
+    fn motor_row(
+        &mut self,
+        r: &Row,
+        motor: JointMotor,
+        error: &dyn Fn(f32) -> f32,
+        v: &mut Velocities,
+    ) {
+        let m = self.mass(r);
+        let cdot = self.cdot(r, v);
+        let acc = self.impulses.motor;
+        let impulse = match motor.target {
+            MotorTarget::Velocity(speed) => -m * (cdot - speed),
+            MotorTarget::Position { target, .. } => {
+                let s = Coeffs::from(self.motor_softness);
+                -m * s.mass_scale * (cdot + s.bias_rate * error(target)) - s.impulse_scale * acc
+            }
+        };
+        let bound = motor.max_force * self.h;
+        let new = (acc + impulse).clamp(-bound, bound);
+        self.impulses.motor = new;
+        self.apply(r, new - acc, v);
+    }
+
+    /// A one-sided row keeping `c ≥ 0`: speculative while `c > 0` (the gap may close by
+    /// exactly `c` this substep), soft (`soft`) once past it.
+    fn limit_row(&self, r: &Row, c: f32, acc: &mut f32, soft: Coeffs, v: &mut Velocities) {
+        let (bias, ms, is) = if c > 0.0 {
+            (c * self.inv_h, 1.0, 0.0)
+        } else {
+            (soft.bias_rate * c, soft.mass_scale, soft.impulse_scale)
+        };
+        let m = self.mass(r);
+        let impulse = -m * ms * (self.cdot(r, v) + bias) - is * *acc;
+        let new = (*acc + impulse).max(0.0);
+        self.apply(r, new - *acc, v);
+        *acc = new;
+    }
+
+    /// The force (N) and torque (N·m) on body B over the last substep, from the accumulated
+    /// impulses at the bodies' current poses.
+    pub(crate) fn reaction(&self, bodies: &[SolverBody], states: &[BodyState]) -> (Vec3, Vec3) {
+        let rows = self.rows(bodies, states);
+        let im = &self.impulses;
+        let (mut force, mut torque) = (Vec3A::ZERO, Vec3A::ZERO);
+        let mut add = |r: &Row, impulse: f32| {
+            force += r.lin * impulse;
+            if r.lin == Vec3A::ZERO {
+                torque += r.ang_b * impulse;
+            }
+        };
+        if let Some((axis, _)) = rows.axis {
+            add(&axis, im.spring + im.motor + im.lower - im.upper);
+        }
+        if let Some((cone, _)) = rows.cone {
+            add(&cone, im.cone);
+        }
+        for i in 0..rows.n_ang {
+            add(&rows.ang[i], im.angular[i]);
+        }
+        for i in 0..rows.n_lin {
+            add(&rows.lin[i], im.linear[i]);
+        }
+        (
+            Vec3::from(force) * self.inv_h,
+            Vec3::from(torque) * self.inv_h,
+        )
+    }
+}
+
+/// The softness of a spring or position motor, if it has one.
+pub(crate) fn drive_softness(
+    spring: Option<JointSpring>,
+    motor: Option<JointMotor>,
+    h: f32,
+) -> (Softness, Softness) {
+    let spring = spring.map_or(Softness::RIGID, |s| {
+        Softness::new(s.hertz, s.damping_ratio, h)
+    });
+    let motor = match motor.map(|m| m.target) {
+        Some(MotorTarget::Position {
+            hertz,
+            damping_ratio,
+            ..
+        }) => Softness::new(hertz, damping_ratio, h),
+        _ => Softness::RIGID,
+    };
+    (spring, motor)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn blocks_solve_exactly_and_drop_rows_that_cannot_move() {
+        let k = [[4.0, 1.0, 0.5], [1.0, 3.0, 0.25], [0.5, 0.25, 2.0]];
+        let b = [1.0, -2.0, 0.5];
+        let x = solve_block(&k, b, 3);
+        for i in 0..3 {
+            let r: f32 = (0..3).map(|j| k[i][j] * x[j]).sum();
+            assert!((r - b[i]).abs() < 1e-5, "row {i}: {r} vs {}", b[i]);
+        }
+        // A row with no mass (locked) gets no impulse; the others are still solved.
+        let k = [[2.0, 0.0, 0.0], [0.0, 0.0, 0.0], [0.0, 0.0, 4.0]];
+        assert_eq!(solve_block(&k, [2.0, 5.0, 2.0], 3), [1.0, 0.0, 0.5]);
+    }
+
+    #[test]
+    fn angles_wrap_into_a_half_turn() {
+        let pi = std::f32::consts::PI;
+        assert!((angle_difference(3.0, -3.0) - (6.0 - 2.0 * pi)).abs() < 1e-5);
+        assert!((angle_difference(-3.0, 3.0) + (6.0 - 2.0 * pi)).abs() < 1e-5);
+        let q = Quat::from_rotation_x(2.5);
+        assert!((twist_angle(q) - 2.5).abs() < 1e-5);
+        assert!((twist_angle(-q) - 2.5).abs() < 1e-5);
+    }
+}
