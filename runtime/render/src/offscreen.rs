@@ -101,17 +101,13 @@ impl Sealed for OffscreenTarget {
         gpu: &GpuContext,
         samples: u32,
     ) -> Result<Option<TargetFrame>, RenderError> {
-        let attachments = Attachments::ensure(
-            &mut self.attachments,
-            gpu.device(),
-            self.size,
-            OFFSCREEN_FORMAT,
-            samples,
-        );
+        let attachments =
+            Attachments::ensure(&mut self.attachments, gpu.device(), self.size, samples);
         Ok(Some(TargetFrame {
             color: self.view.clone(),
             depth: attachments.depth.clone(),
-            msaa: attachments.msaa.clone(),
+            hdr: attachments.hdr.clone(),
+            resolve: attachments.resolve.clone(),
             format: OFFSCREEN_FORMAT,
             samples,
             surface_texture: None,

@@ -5,12 +5,14 @@ pub(crate) mod sealed {
     use crate::gpu_context::GpuContext;
     use crate::render_error::RenderError;
 
-    /// Views of one frame of a target.
+    /// Views of one frame of a target: the scene is drawn into `hdr` (resolved into
+    /// `resolve` with MSAA) with `depth`, then tone-mapped into `color`.
     #[derive(Debug)]
     pub struct TargetFrame {
         pub(crate) color: wgpu::TextureView,
         pub(crate) depth: wgpu::TextureView,
-        pub(crate) msaa: Option<wgpu::TextureView>,
+        pub(crate) hdr: wgpu::TextureView,
+        pub(crate) resolve: Option<wgpu::TextureView>,
         pub(crate) format: wgpu::TextureFormat,
         pub(crate) samples: u32,
         pub(crate) surface_texture: Option<wgpu::SurfaceTexture>,

@@ -287,16 +287,14 @@ impl RenderSystem {
             let [r, g, b, a] = renderer.material.color;
             for part in &model.parts {
                 let pc = part.material.color;
-                let mut material = onyx_render::Material {
+                let material = onyx_render::Material {
                     color: [r * pc[0], g * pc[1], b * pc[2], a * pc[3]],
                     texture: texture.or(part.material.texture),
                     shading: to_render_shading(
                         shading_override.unwrap_or(renderer.material.shading),
                     ),
+                    ..part.material
                 };
-                if material.shading != onyx_render::ShadingMode::Lit {
-                    material.texture = None;
-                }
                 self.objects.push(DrawObject::new(
                     part.mesh,
                     material,
@@ -348,11 +346,7 @@ impl RenderSystem {
     /// The scene's lights at their world poses (directional lights shine along their local
     /// -Z, point lights sit at their origin).
     fn lights(world: &WorldState) -> Lights {
-        let mut lights = Lights {
-            ambient: Vec3::ZERO,
-            sun: None,
-            points: Vec::new(),
-        };
+        let mut lights = Lights::none();
         let mut any = false;
         for (e, light, t) in world
             .ecs
@@ -367,13 +361,14 @@ impl RenderSystem {
                 }
                 Light::Directional { color, intensity } => {
                     if lights.sun.is_none() {
-                        lights.sun = Some(DirectionalLight {
-                            direction: pose
-                                .transform_vector3(Vec3::NEG_Z)
-                                .normalize_or(Vec3::NEG_Z),
-                            color: Vec3::from(color),
-                            intensity,
-                        });
+                        lights.sun = Some(
+                            DirectionalLight::new(
+                                pose.transform_vector3(Vec3::NEG_Z)
+                                    .normalize_or(Vec3::NEG_Z),
+                            )
+                            .with_color(Vec3::from(color))
+                            .with_intensity(intensity),
+                        );
                     }
                 }
                 Light::Point {
