@@ -9,8 +9,11 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 source scripts/setup.sh
 
-cargo build --workspace --locked
-ONYX=target/debug/onyx
+# The build scripts/test.sh runs too (onyx_build, scripts/setup.sh): after either script,
+# the other compiles nothing again.
+onyx_build
+ONYX="$PWD/target/debug/onyx"
+echo "run.sh: running $ONYX" >&2
 DEMO=(run --plugin showcase --plugin spinner --scene assets/scenes/demo.ron)
 
 if [ "$#" -gt 0 ]; then

@@ -38,6 +38,16 @@ if ! command -v cargo >/dev/null 2>&1; then
   exit 1
 fi
 
+# The one build every script runs (run.sh, test.sh, example.sh): the libraries, binaries,
+# tests and examples of the whole workspace, with the settings of Cargo.toml's [profile.dev].
+# The same command each time builds the same crates with the same features (the tests'
+# dev-dependencies turn features on in shared dependencies, so a build without the tests
+# compiles the crates above those a second time), so after any of the scripts the others
+# compile nothing again.
+onyx_build() {
+  cargo build --workspace --locked --lib --bins --tests --examples "$@"
+}
+
 # Rendering and windows without a GPU: Mesa's CPU Vulkan driver, X11 only.
 export WGPU_BACKEND="${WGPU_BACKEND:-vulkan}"
 export WGPU_ADAPTER_NAME="${WGPU_ADAPTER_NAME:-llvmpipe}"

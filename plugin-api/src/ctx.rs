@@ -239,6 +239,27 @@ impl<'a> Ctx<'a> {
         self.host.request_quit()
     }
 
+    /// Keeps the window open after the user asked to close it: call it while handling
+    /// [`WindowEvent::CloseRequested`](crate::WindowEvent::CloseRequested) when there is
+    /// unsaved work, ask the user, then [`Ctx::request_quit`] if they agree. Without it the
+    /// host quits after the frame that delivered the event.
+    ///
+    /// ```no_run
+    /// # use onyx_plugin_api::{Ctx, Event, WindowEvent};
+    /// # struct Editor { unsaved: bool, asking: bool }
+    /// # impl Editor {
+    /// fn on_event(&mut self, ctx: &mut Ctx, event: &Event) {
+    ///     if matches!(event, Event::Window(WindowEvent::CloseRequested)) && self.unsaved {
+    ///         ctx.prevent_close();
+    ///         self.asking = true; // draw_gui shows "Save changes?" next
+    ///     }
+    /// }
+    /// # }
+    /// ```
+    pub fn prevent_close(&mut self) {
+        self.host.prevent_close()
+    }
+
     // ----- events -----
 
     /// Sends a typed custom event to every plugin (delivered next frame, sender included).

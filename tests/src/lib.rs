@@ -5,18 +5,25 @@
 //! command runs it before `cargo test`), into the same target directory as the tests: a
 //! nested `cargo build` inside a test would block on cargo's target-directory lock.
 
+pub mod fuzz;
+
 use std::path::PathBuf;
 use std::sync::{Arc, Mutex};
 
 use onyx_plugin_api::{AttachInfo, Ctx, Event, Flow, Plugin, PluginError};
 
-/// The target directory of this build (`target/debug`), from the test executable's path.
+/// The target directory of this build (`target/debug`), from the running executable's path
+/// (a test in `target/debug/deps`, or a binary like `onyx-fuzz` in `target/debug`).
 pub fn target_dir() -> PathBuf {
     let exe = std::env::current_exe().expect("the test knows its own path");
-    let deps = exe
+    let dir = exe
         .parent()
-        .expect("test executables live in target/<profile>/deps");
-    deps.parent().expect("deps has a parent").to_path_buf()
+        .expect("executables live in target/<profile> or target/<profile>/deps");
+    if dir.file_name().is_some_and(|n| n == "deps") {
+        dir.parent().expect("deps has a parent").to_path_buf()
+    } else {
+        dir.to_path_buf()
+    }
 }
 
 /// The built library of workspace crate `crate_name` (`hello`, `fixture-faulty`, …).

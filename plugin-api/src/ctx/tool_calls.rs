@@ -6,13 +6,13 @@ use serde::Serialize;
 
 use super::{ok, Ctx};
 use crate::__ffi::{ReportFfi, SceneOpFfi};
-use crate::glam::Vec2;
+use crate::glam::{Vec2, Vec3};
 use crate::host::PlayCommand;
 use crate::tools::{
-    ComponentKey, ComponentValue, Diagnostics, EntityList, LogLine, PlayMode, PluginInfo,
+    Bounds, ComponentKey, ComponentValue, Diagnostics, EntityList, LogLine, PlayMode, PluginInfo,
     PluginValue, Ray, RenderOverrides, ScriptInfo,
 };
-use crate::{BlobFormat, BuiltinValue, CtxError, Entity};
+use crate::{BlobFormat, BuiltinValue, CtxError, Entity, RayHit};
 
 impl Ctx<'_> {
     fn report<T: DeserializeOwned>(
@@ -221,5 +221,31 @@ impl Ctx<'_> {
     /// The view switches in effect.
     pub fn render_overrides(&self) -> RenderOverrides {
         self.host.render_overrides()
+    }
+
+    /// The nearest entity the ray from `origin` along `direction` meets within
+    /// `max_distance` metres, by what it shows: each visible mesh (the built-in shapes
+    /// exactly, a loaded model by its bounding box) and each collider, at its world pose —
+    /// children too — in Edit mode as well as while playing (no physics step needed, unlike
+    /// [`Ctx::raycast`], which sees only simulated colliders). Click-to-select is
+    /// `ctx.screen_ray(p, size).and_then(|r| ctx.pick(r.origin, r.direction, 1000.0))`.
+    pub fn pick(&mut self, origin: Vec3, direction: Vec3, max_distance: f32) -> Option<RayHit> {
+        let ray = crate::__ffi::RayFfi {
+            origin: origin.to_array(),
+            direction: direction.to_array(),
+            max_distance,
+        };
+        self.host.pick(ray).into_option()
+    }
+
+    /// The box around what `entity` shows — its mesh (a loaded model's bounding box), else
+    /// its collider — in its own frame: place its corners with [`Ctx::world_pose`] to outline
+    /// it. `None` for an entity that shows nothing, or does not exist.
+    pub fn local_bounds(&mut self, entity: Entity) -> Option<Bounds> {
+        let bounds = self.host.local_bounds(entity).into_option()?;
+        Some(Bounds {
+            min: bounds.min.into(),
+            max: bounds.max.into(),
+        })
     }
 }

@@ -13,6 +13,7 @@ pub enum WindowEvent {
     },
     /// The window gained (`true`) or lost (`false`) keyboard focus.
     Focused(bool),
-    /// The user asked to close the window; the host quits after this frame.
+    /// The user asked to close the window; the host quits after this frame unless a plugin
+    /// keeps it open with [`Ctx::prevent_close`](crate::Ctx::prevent_close).
     CloseRequested,
 }

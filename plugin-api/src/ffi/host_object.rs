@@ -15,7 +15,7 @@ use abi_stable::{
 
 use super::TransformFfi;
 use super::{BlobFfi, BuiltinFfi, ComponentsFfi, CtxErrorFfi, EntityBlobFfi};
-use super::{EntityListFfi, GlobalTransformFfi, ReportFfi, SceneOpFfi, ScreenPointFfi};
+use super::{BoundsFfi, EntityListFfi, GlobalTransformFfi, ReportFfi, SceneOpFfi, ScreenPointFfi};
 use crate::host::PhysicsCommand;
 use crate::host::PlayCommand;
 use crate::host::{HostServices, PluginRequest};
@@ -32,6 +32,7 @@ pub trait HostObject {
     fn time(&self) -> Time;
     fn input(&self) -> InputState;
     fn request_quit(&mut self);
+    fn prevent_close(&mut self);
     fn set_paused(&mut self, paused: bool);
     fn set_time_scale(&mut self, scale: f32) -> RResult<(), CtxErrorFfi>;
     fn step_once(&mut self);
@@ -92,6 +93,8 @@ pub trait HostObject {
     fn screen_ray(&mut self, point: ScreenPointFfi) -> ROption<RayFfi>;
     fn set_render_overrides(&mut self, overrides: RenderOverrides);
     fn render_overrides(&self) -> RenderOverrides;
+    fn pick(&mut self, ray: RayFfi) -> ROption<RayHit>;
+    fn local_bounds(&mut self, entity: Entity) -> ROption<BoundsFfi>;
 }
 
 /// A ray, as plain data.
@@ -174,6 +177,10 @@ impl<H: HostServices + ?Sized> HostObject for HostBridge<'_, H> {
 
     fn request_quit(&mut self) {
         guard("request_quit", || (), || self.0.request_quit())
+    }
+
+    fn prevent_close(&mut self) {
+        guard("prevent_close", || (), || self.0.prevent_close())
     }
 
     fn set_paused(&mut self, paused: bool) {
@@ -442,6 +449,34 @@ impl<H: HostServices + ?Sized> HostObject for HostBridge<'_, H> {
         guard("render_overrides", RenderOverrides::default, || {
             self.0.render_overrides()
         })
+    }
+
+    fn pick(&mut self, ray: RayFfi) -> ROption<RayHit> {
+        guard(
+            "pick",
+            || ROption::RNone,
+            || {
+                self.0
+                    .pick(ray.origin.into(), ray.direction.into(), ray.max_distance)
+                    .into()
+            },
+        )
+    }
+
+    fn local_bounds(&mut self, entity: Entity) -> ROption<BoundsFfi> {
+        guard(
+            "local_bounds",
+            || ROption::RNone,
+            || {
+                self.0
+                    .local_bounds(entity)
+                    .map(|b| BoundsFfi {
+                        min: b.min.to_array(),
+                        max: b.max.to_array(),
+                    })
+                    .into()
+            },
+        )
     }
 }
 

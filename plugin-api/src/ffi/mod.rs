@@ -40,7 +40,7 @@ pub use plugin_object::{
 };
 pub use root_module::{PluginModule, PluginModuleRef, ROOT_SYMBOL};
 pub use script_call_ffi::ScriptCallFfi;
-pub use tool_values::{EntityListFfi, ReportFfi, SceneOpFfi, ScreenPointFfi};
+pub use tool_values::{BoundsFfi, EntityListFfi, ReportFfi, SceneOpFfi, ScreenPointFfi};
 pub use values::{
     BlobFfi, BuiltinFfi, ComponentsFfi, EntityBlobFfi, GlobalTransformFfi, NameFfi, TransformFfi,
 };

@@ -87,6 +87,14 @@ pub enum ReportFfi {
     Scripts,
 }
 
+/// An axis-aligned box in an entity's frame, metres.
+#[repr(C)]
+#[derive(StableAbi, Clone, Copy, Debug, PartialEq)]
+pub struct BoundsFfi {
+    pub min: [f32; 3],
+    pub max: [f32; 3],
+}
+
 /// A pixel of a view and the view's size, both in pixels.
 #[repr(C)]
 #[derive(StableAbi, Clone, Copy, Debug, PartialEq)]

@@ -26,6 +26,8 @@ pub trait HostServices: crate::host::ToolServices {
     fn input(&self) -> InputState;
     /// Ends the run after this frame.
     fn request_quit(&mut self);
+    /// Keeps the window open although the user asked to close it this frame.
+    fn prevent_close(&mut self);
     /// Pauses or resumes fixed steps.
     fn set_paused(&mut self, paused: bool);
     /// Sets the time scale (finite, ≥ 0).

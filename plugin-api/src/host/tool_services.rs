@@ -1,12 +1,13 @@
 //! [`ToolServices`]: the host services tools (the editor first) use — world introspection,
 //! scenes, plugins, diagnostics, console, play mode, scripts, viewport — in plain Rust.
 
-use crate::glam::Vec2;
+use crate::glam::{Vec2, Vec3};
 use crate::host::{Blob, PlayCommand};
 use crate::tools::{
-    Diagnostics, EntityList, LogLine, PlayMode, PluginInfo, Ray, RenderOverrides, ScriptInfo,
+    Bounds, Diagnostics, EntityList, LogLine, PlayMode, PluginInfo, Ray, RenderOverrides,
+    ScriptInfo,
 };
-use crate::{BuiltinValue, CtxError, Entity};
+use crate::{BuiltinValue, CtxError, Entity, RayHit};
 
 fn unsupported(service: &str) -> CtxError {
     CtxError::Unsupported {
@@ -87,5 +88,15 @@ pub trait ToolServices {
     /// The view switches.
     fn render_overrides(&self) -> RenderOverrides {
         RenderOverrides::default()
+    }
+    /// The nearest entity whose shape the ray from `origin` along `direction` (unit length)
+    /// meets within `max_distance` metres: visible meshes and colliders, at their world
+    /// poses, in every play mode.
+    fn pick(&mut self, origin: Vec3, direction: Vec3, max_distance: f32) -> Option<RayHit> {
+        None
+    }
+    /// The box around what `entity` shows (its mesh, else its collider), in its own frame.
+    fn local_bounds(&mut self, entity: Entity) -> Option<Bounds> {
+        None
     }
 }

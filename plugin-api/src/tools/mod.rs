@@ -11,7 +11,9 @@
 //! - `script.rs`: [`Script`] (the component), [`ScriptCall`], [`ScriptPhase`], [`ScriptInfo`].
 //! - `render_overrides.rs`: [`RenderOverrides`], the editor's view switches.
 //! - `ray.rs`: [`Ray`], a ray through the viewport.
+//! - `bounds.rs`: [`Bounds`], the box an entity shows, in its own frame.
 
+mod bounds;
 mod component_value;
 mod diagnostics;
 mod entity_list;
@@ -22,6 +24,7 @@ mod ray;
 mod render_overrides;
 mod script;
 
+pub use bounds::Bounds;
 pub use component_value::{ComponentKey, ComponentValue, PluginValue};
 pub use diagnostics::{Diagnostics, PluginTiming, StageTiming};
 pub use entity_list::EntityList;

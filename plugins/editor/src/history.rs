@@ -48,11 +48,15 @@ impl Command {
     }
 }
 
-/// Undo and redo stacks. Edits are applied by the caller, then recorded here.
-#[derive(Debug, Default)]
+/// Undo and redo stacks. Edits are applied by the caller, then recorded here. It also knows
+/// whether the scene has edits since it was opened or saved ([`History::is_modified`]).
+#[derive(Debug)]
 pub struct History {
     undo: Vec<Command>,
     redo: Vec<Command>,
+    /// The depth of the undo stack when the scene was opened or last saved; `None` once that
+    /// state cannot come back by undo or redo (edited over, or dropped past the limit).
+    saved_at: Option<usize>,
     /// Frame of the last [`History::record_merged`], to merge a drag into one edit.
     last_merge_frame: Option<u64>,
     /// Entities recreated (old handle, new handle) by the edit being applied: the rest of a
@@ -63,15 +67,43 @@ pub struct History {
 /// Most edits kept.
 const LIMIT: usize = 500;
 
+impl Default for History {
+    fn default() -> Self {
+        Self {
+            undo: Vec::new(),
+            redo: Vec::new(),
+            saved_at: Some(0),
+            last_merge_frame: None,
+            recreated: Vec::new(),
+        }
+    }
+}
+
 impl History {
     /// Records an edit already applied.
     pub fn record(&mut self, command: Command) {
+        if self.saved_at.is_some_and(|depth| depth > self.undo.len()) {
+            self.saved_at = None; // the saved state was in the redo stack, dropped now
+        }
         self.redo.clear();
         self.undo.push(command);
         if self.undo.len() > LIMIT {
             self.undo.remove(0);
+            self.saved_at = self.saved_at.and_then(|depth| depth.checked_sub(1));
         }
         self.last_merge_frame = None;
+    }
+
+    /// Whether the scene has edits since it was opened or last saved ([`History::mark_saved`]):
+    /// undoing back to that point makes it unmodified again. Edits made while playing are
+    /// not edits (Stop puts them back).
+    pub fn is_modified(&self) -> bool {
+        self.saved_at != Some(self.undo.len())
+    }
+
+    /// The scene was just saved: it is unmodified as it stands.
+    pub fn mark_saved(&mut self) {
+        self.saved_at = Some(self.undo.len());
     }
 
     /// Records a component change, merged into the previous edit when that changed the same
@@ -96,6 +128,9 @@ impl History {
             if entity == e2 && key == k2 {
                 *new = n2.clone();
                 self.last_merge_frame = Some(frame);
+                if self.saved_at == Some(self.undo.len()) {
+                    self.saved_at = None; // the saved edit itself changed
+                }
                 return;
             }
         }
@@ -230,10 +265,11 @@ impl History {
         }
     }
 
-    /// Forgets every edit (a new or opened scene).
+    /// Forgets every edit (a new or opened scene, unmodified as it stands).
     pub fn clear(&mut self) {
         self.undo.clear();
         self.redo.clear();
+        self.saved_at = Some(0);
         self.last_merge_frame = None;
     }
 }

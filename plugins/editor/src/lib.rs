@@ -183,9 +183,7 @@ fn shortcuts(ui: &mut egui::Ui, ctx: &mut Ctx, state: &mut EditorState) {
         state.delete_selection(ctx);
     }
     if save {
-        if let Some(path) = ctx.scene_path() {
-            menu::save_scene(ctx, state, &path);
-        }
+        menu::save(ctx, state);
     }
 }
 

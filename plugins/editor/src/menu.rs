@@ -25,12 +25,32 @@ pub fn menu_bar(
         ui.separator();
         play_toolbar(ui, ctx);
         ui.separator();
-        let scene = ctx.scene_path().unwrap_or_else(|| "untitled".to_owned());
-        ui.weak(scene);
+        title(ui, ctx, state);
         if !state.status.is_empty() {
             ui.colored_label(egui::Color32::from_rgb(230, 160, 60), &state.status);
         }
     });
+}
+
+/// The editor's title: the scene's file name (the whole path on hover), or "untitled",
+/// then " *" while it has edits that are not saved.
+fn title(ui: &mut egui::Ui, ctx: &mut Ctx, state: &EditorState) {
+    let path = ctx.scene_path();
+    let name = path
+        .as_deref()
+        .map(std::path::Path::new)
+        .and_then(std::path::Path::file_name)
+        .map(|n| n.to_string_lossy().into_owned())
+        .unwrap_or_else(|| "untitled".to_owned());
+    let marker = if state.history.is_modified() {
+        " *"
+    } else {
+        ""
+    };
+    let shown = ui.weak(format!("{name}{marker}"));
+    if let Some(path) = path {
+        shown.on_hover_text(path);
+    }
 }
 
 fn file_menu(ui: &mut egui::Ui, ctx: &mut Ctx, state: &mut EditorState) {
@@ -41,13 +61,19 @@ fn file_menu(ui: &mut egui::Ui, ctx: &mut Ctx, state: &mut EditorState) {
         state.file_dialog = Some(FileDialog::new(FilePurpose::Open, &scene_dir(ctx)));
     }
     if ui.button("Save").clicked() {
-        match ctx.scene_path() {
-            Some(path) => save_scene(ctx, state, &path),
-            None => state.file_dialog = Some(FileDialog::new(FilePurpose::SaveAs, &scene_dir(ctx))),
-        }
+        save(ctx, state);
     }
     if ui.button("Save As…").clicked() {
-        state.file_dialog = Some(FileDialog::new(FilePurpose::SaveAs, &scene_dir(ctx)));
+        // In the scene's folder with its name filled in, else in the folder scenes live in.
+        let start = ctx
+            .scene_path()
+            .map(std::path::PathBuf::from)
+            .filter(|p| {
+                p.parent()
+                    .is_some_and(|d| d.as_os_str().is_empty() || d.is_dir())
+            })
+            .unwrap_or_else(|| scene_dir(ctx));
+        state.file_dialog = Some(FileDialog::new(FilePurpose::SaveAs, &start));
     }
     ui.menu_button("Recent", |ui| {
         if state.recent.is_empty() {
@@ -89,6 +115,7 @@ pub fn new_scene(ctx: &mut Ctx, state: &mut EditorState) {
         Ok(()) => {
             state.selection.clear();
             state.history.clear();
+            state.viewport.forget_camera();
         }
         Err(e) => state.report(ctx, "cannot start a new scene", e),
     }
@@ -100,6 +127,7 @@ pub fn open_scene(ctx: &mut Ctx, state: &mut EditorState, path: &str) {
         Ok(()) => {
             state.selection.clear();
             state.history.clear();
+            state.viewport.forget_camera();
             state.remember_scene(path);
             state.status.clear();
         }
@@ -107,10 +135,20 @@ pub fn open_scene(ctx: &mut Ctx, state: &mut EditorState, path: &str) {
     }
 }
 
+/// File ▸ Save and Ctrl+S: to the scene's file (the one opened, saved, or given with
+/// `--scene`), or through Save As for a scene that has none yet.
+pub fn save(ctx: &mut Ctx, state: &mut EditorState) {
+    match ctx.scene_path() {
+        Some(path) => save_scene(ctx, state, &path),
+        None => state.file_dialog = Some(FileDialog::new(FilePurpose::SaveAs, &scene_dir(ctx))),
+    }
+}
+
 /// Saves the world to a scene file.
 pub fn save_scene(ctx: &mut Ctx, state: &mut EditorState, path: &str) {
     match ctx.save_scene(path) {
         Ok(()) => {
+            state.history.mark_saved();
             state.remember_scene(path);
             state.status.clear();
         }

@@ -38,7 +38,7 @@ pub struct Host {
     pub(crate) plugins: Vec<PluginSlot>,
     plugin_settings: Vec<(String, String, String)>,
     search_path: PluginSearchPath,
-    initialized: bool,
+    pub(crate) initialized: bool,
     shut_down: bool,
     pub(crate) watcher: Option<crate::plugins::LibraryWatcher>,
     pub(crate) gui: crate::gui::GuiSystem,
@@ -405,9 +405,15 @@ impl Host {
             }
         }
         for event in &events {
+            let closing = matches!(event, Event::Window(WindowEvent::CloseRequested));
+            if closing {
+                self.state.io.close_requested = true;
+                self.state.io.close_kept_by = None;
+            }
             for slot in &mut self.plugins {
                 slot.call(&mut self.state, Stage::Event, |p, cx| p.on_event(cx, event));
             }
+            self.state.io.close_requested = false;
             match event {
                 Event::Window(WindowEvent::Resized { width, height }) => {
                     let (w, h) = (*width, *height);
@@ -417,7 +423,12 @@ impl Host {
                         });
                     }
                 }
-                Event::Window(WindowEvent::CloseRequested) => self.state.io.quit_requested = true,
+                // A plugin with unsaved work may keep the window open to ask first.
+                Event::Window(WindowEvent::CloseRequested)
+                    if self.state.io.close_kept_by.is_none() =>
+                {
+                    self.state.io.quit_requested = true;
+                }
                 _ => {}
             }
         }
@@ -537,6 +548,7 @@ impl Host {
     /// Spawns the entities of the scene file at `path` (added to what is there). On error
     /// the world is unchanged and the error is also raised as a platform event.
     /// A scene that sets `physics` also sets the fixed step rate and the physics settings.
+    /// The file becomes the world's scene file (`Ctx::scene_path`: the one tools save to).
     pub fn load_scene(&mut self, path: &Path) -> Result<usize, SceneError> {
         let loaded = scene::read_scene(path).and_then(|file| {
             let world = &mut self.state.world;
@@ -548,7 +560,10 @@ impl Host {
             Ok(n)
         });
         match &loaded {
-            Ok(n) => tracing::info!(path = %path.display(), entities = n, "loaded scene"),
+            Ok(n) => {
+                tracing::info!(path = %path.display(), entities = n, "loaded scene");
+                self.state.tools.scene_path = Some(path.to_path_buf());
+            }
             Err(error) => {
                 // Returned to the caller, who reports it; plugins hear of it as an event.
                 tracing::debug!("{error}");

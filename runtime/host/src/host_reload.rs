@@ -115,8 +115,10 @@ impl Host {
     /// `load_state` → old `on_detach` → new `on_attach` (with `reload: true`) → the old plugin
     /// object is dropped. The world is untouched. If anything before the swap fails, the old
     /// build keeps running; if the new `on_attach` fails, the old build is attached again.
-    /// A faulted plugin is revived by a successful reload. The old image stays mapped (it is
-    /// never unloaded; see [`open_library`]).
+    /// A faulted plugin is revived by a successful reload: its state is not carried over (it
+    /// is not trusted), so the new build starts empty, gets `on_init` again (once the host
+    /// has initialised its plugins) and the host logs that it did. The old image stays
+    /// mapped (it is never unloaded; see [`open_library`]).
     pub fn reload_plugin(&mut self, name: &str) -> Result<(), ReloadError> {
         self.reload_with_hash(name, None)
     }
@@ -282,6 +284,18 @@ impl Host {
         slot.origin = PluginOrigin::Library { path, loaded_from };
         slot.content_hash = hash;
         slot.reloads += 1;
+        if !was_running {
+            // Nothing came over from the faulted build: without `on_init` the new one would
+            // sit idle, never having set itself up.
+            tracing::warn!(
+                plugin = name,
+                "plugin revived by a good build after its fault, with empty state (the \
+                 faulted build's state is not carried over); calling its on_init again"
+            );
+            if self.initialized {
+                slot.call(&mut self.state, Stage::Init, |p, cx| p.on_init(cx));
+            }
+        }
         // The new image builds a fresh egui context: its textures start over.
         self.gui.forget(name);
         Ok(())

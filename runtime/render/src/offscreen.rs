@@ -101,10 +101,13 @@ impl Sealed for OffscreenTarget {
         gpu: &GpuContext,
         samples: u32,
     ) -> Result<Option<TargetFrame>, RenderError> {
+        let overlay = self.encoded_view();
         let attachments =
             Attachments::ensure(&mut self.attachments, gpu.device(), self.size, samples);
         Ok(Some(TargetFrame {
             color: self.view.clone(),
+            overlay,
+            overlay_format: OFFSCREEN_FORMAT.remove_srgb_suffix(),
             depth: attachments.depth.clone(),
             hdr: attachments.hdr.clone(),
             resolve: attachments.resolve.clone(),

@@ -11,7 +11,8 @@ pub struct Overlay<'a> {
     pub queue: &'a wgpu::Queue,
     /// The frame's command encoder; the scene's pass is already recorded.
     pub encoder: &'a mut wgpu::CommandEncoder,
-    /// The target's colour view (resolved, single-sampled).
+    /// The target's colour (resolved, single-sampled), viewed without sRGB encoding where
+    /// the target allows it: egui blends in sRGB space and writes encoded values.
     pub view: &'a wgpu::TextureView,
     /// The colour format of `view`.
     pub format: wgpu::TextureFormat,

@@ -10,6 +10,11 @@ pub(crate) mod sealed {
     #[derive(Debug)]
     pub struct TargetFrame {
         pub(crate) color: wgpu::TextureView,
+        /// The colour as overlays (egui) draw into it: the same texture, viewed without sRGB
+        /// encoding where the target allows (egui blends in sRGB space and writes encoded
+        /// values; on an sRGB view it would be decoded twice, and egui-wgpu warns).
+        pub(crate) overlay: wgpu::TextureView,
+        pub(crate) overlay_format: wgpu::TextureFormat,
         pub(crate) depth: wgpu::TextureView,
         pub(crate) hdr: wgpu::TextureView,
         pub(crate) resolve: Option<wgpu::TextureView>,

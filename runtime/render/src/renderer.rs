@@ -315,8 +315,8 @@ impl Renderer {
             device: self.gpu.device(),
             queue: self.gpu.queue(),
             encoder: &mut encoder,
-            view: &frame.color,
-            format: frame.format,
+            view: &frame.overlay,
+            format: frame.overlay_format,
             size,
         });
         self.gpu.queue().submit([encoder.finish()]);

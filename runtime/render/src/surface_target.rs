@@ -51,6 +51,20 @@ impl SurfaceTarget {
             .copied()
             .find(wgpu::TextureFormat::is_srgb)
             .unwrap_or(first);
+        // Overlays (egui) draw through a view of the same texture without sRGB encoding,
+        // where the platform lets a surface be viewed so.
+        let plain = format.remove_srgb_suffix();
+        let view_formats = if plain != format
+            && gpu
+                .adapter()
+                .get_downlevel_capabilities()
+                .flags
+                .contains(wgpu::DownlevelFlags::SURFACE_VIEW_FORMATS)
+        {
+            vec![plain]
+        } else {
+            Vec::new()
+        };
         let config = wgpu::SurfaceConfiguration {
             usage: wgpu::TextureUsages::RENDER_ATTACHMENT
                 | (caps.usages & wgpu::TextureUsages::COPY_SRC),
@@ -65,7 +79,7 @@ impl SurfaceTarget {
                 .first()
                 .copied()
                 .unwrap_or(wgpu::CompositeAlphaMode::Auto),
-            view_formats: Vec::new(),
+            view_formats,
         };
         tracing::info!(?format, width, height, vsync, "window surface ready");
         let mut target = Self {
@@ -193,8 +207,20 @@ impl Sealed for SurfaceTarget {
         let color = texture
             .texture
             .create_view(&wgpu::TextureViewDescriptor::default());
+        let overlay_format = self
+            .config
+            .view_formats
+            .first()
+            .copied()
+            .unwrap_or(self.config.format);
+        let overlay = texture.texture.create_view(&wgpu::TextureViewDescriptor {
+            format: Some(overlay_format),
+            ..wgpu::TextureViewDescriptor::default()
+        });
         Ok(Some(TargetFrame {
             color,
+            overlay,
+            overlay_format,
             depth: attachments.depth.clone(),
             hdr: attachments.hdr.clone(),
             resolve: attachments.resolve.clone(),

@@ -209,6 +209,54 @@ fn plugins_lists_the_search_path_and_what_it_finds() {
     );
 }
 
+/// `onyx plugins` listed `target/debug` twice (as the executable's folder and as
+/// `./target/debug`) and showed the test suite's fixture libraries as plugins.
+#[test]
+fn plugins_lists_each_folder_once_and_no_test_fixtures() {
+    let out = Command::new(onyx_binary())
+        .arg("plugins")
+        .current_dir(repo_root())
+        .env_remove("ONYX_PLUGIN_PATH")
+        .env_remove("CARGO_TARGET_DIR")
+        .output()
+        .expect("onyx runs");
+    assert!(out.status.success(), "{}", stderr(&out));
+    let text = String::from_utf8_lossy(&out.stdout);
+    let folders: Vec<std::path::PathBuf> = text
+        .lines()
+        .filter(|l| l.starts_with("  ") && !l.starts_with("    "))
+        .map(|l| {
+            let dir = repo_root().join(l.trim());
+            dir.canonicalize().unwrap_or(dir)
+        })
+        .collect();
+    for (i, dir) in folders.iter().enumerate() {
+        assert!(
+            !folders[..i].contains(dir),
+            "{} listed twice:\n{text}",
+            dir.display()
+        );
+    }
+    assert!(text.contains("    editor"), "{text}");
+    assert!(!text.contains("    fixture_"), "fixtures listed:\n{text}");
+}
+
+/// Log lines written to a file or a pipe carried ANSI colour codes.
+#[test]
+fn logs_to_a_pipe_have_no_colour_codes() {
+    let out = Command::new(onyx_binary())
+        .args(["run", "--headless", "--frames", "3", "--plugin", "hello"])
+        .env("ONYX_PLUGIN_PATH", target_dir())
+        .env("RUST_LOG", "info")
+        .env_remove("NO_COLOR")
+        .output()
+        .expect("onyx runs");
+    let err = stderr(&out);
+    assert!(out.status.success(), "{err}");
+    assert!(err.contains("INFO"), "info lines were logged: {err}");
+    assert!(!err.contains('\u{1b}'), "colour codes in a pipe: {err:?}");
+}
+
 /// A real window: winit under Xvfb opens it, the host runs frames in it, resizes reach the
 /// plugins, and it closes cleanly when the run ends.
 #[test]

@@ -2,8 +2,10 @@
 //! crate that builds and passes its tests; `onyx dev` runs it, rebuilds it when its source
 //! changes and hot-reloads it with its state, and keeps running through a compile error.
 //!
-//! The scaffolded crates build into `target/scaffold` (not the main target directory: the
-//! outer `cargo test` holds its lock), once for all these tests; they take turns on it.
+//! The scaffolded crates build into this build's own target directory, as the README tells
+//! a plugin author to (`CARGO_TARGET_DIR=<checkout>/target`): they reuse every dependency
+//! already compiled there (cargo lets go of the directory's lock once the test binaries are
+//! built), so only the four Onyx crates and the scaffolded crate compile. They take turns.
 
 use std::io::{BufRead, BufReader};
 use std::path::{Path, PathBuf};
@@ -13,19 +15,21 @@ use std::time::{Duration, Instant};
 
 use onyx_tests::{onyx_binary, target_dir};
 
-/// The tests that build a scaffolded crate take turns (they share `target/scaffold`).
+/// The tests that build a scaffolded crate take turns (one cargo at a time in the target
+/// directory).
 static SCAFFOLD_TARGET: Mutex<()> = Mutex::new(());
 
 fn scaffold_target_lock() -> MutexGuard<'static, ()> {
     SCAFFOLD_TARGET.lock().unwrap_or_else(|e| e.into_inner())
 }
 
-/// Where scaffolded crates are built: a fixed directory, so later runs reuse the build.
+/// Where scaffolded crates are built: the target directory of this build (`target/`). Their
+/// names start `fixture-`, so `onyx plugins` does not list the libraries they leave there.
 fn scaffold_target_dir() -> PathBuf {
     target_dir()
         .parent()
         .expect("target/debug has a parent")
-        .join("scaffold")
+        .to_path_buf()
 }
 
 fn onyx(args: &[&str]) -> Output {
@@ -67,11 +71,11 @@ fn new_plugin(name: &str, parent: &Path) -> PathBuf {
 #[test]
 fn new_plugin_scaffolds_a_crate_that_builds_and_passes_its_tests() {
     let parent = tempfile::tempdir().unwrap();
-    let dir = new_plugin("scaffold-check", parent.path());
+    let dir = new_plugin("fixture-scaffold-check", parent.path());
 
     let manifest = std::fs::read_to_string(dir.join("Cargo.toml")).unwrap();
     for needle in [
-        "name = \"scaffold-check\"",
+        "name = \"fixture-scaffold-check\"",
         "crate-type = [\"cdylib\", \"rlib\"]",
         "[workspace]",
         "onyx-plugin-api = { path = ",
@@ -274,11 +278,11 @@ impl Drop for DevRun {
     }
 }
 
-/// `step N: x = X (speed S)` from the scaffolded plugin's log.
+/// `step N: travelled D m (speed S)` from the scaffolded plugin's log: steps, metres, speed.
 fn progress(line: &str) -> Option<(u64, f32, f32)> {
     let rest = &line[line.find("step ")? + 5..];
-    let (steps, rest) = rest.split_once(": x = ")?;
-    let (x, rest) = rest.split_once(" (speed ")?;
+    let (steps, rest) = rest.split_once(": travelled ")?;
+    let (x, rest) = rest.split_once(" m (speed ")?;
     let (speed, _) = rest.split_once(')')?;
     Some((steps.parse().ok()?, x.parse().ok()?, speed.parse().ok()?))
 }
@@ -300,23 +304,23 @@ fn edit(file: &Path, from: &str, to: &str) {
 #[test]
 fn dev_rebuilds_and_hot_reloads_a_scaffolded_plugin_on_save() {
     let parent = tempfile::tempdir().unwrap();
-    let dir = new_plugin("dev-loop-probe", parent.path());
+    let dir = new_plugin("fixture-dev-loop-probe", parent.path());
     let lib_rs = dir.join("src/lib.rs");
     let _turn = scaffold_target_lock();
 
     let mut dev = DevRun::start(&dir);
-    // The first build may compile the dependencies (once per target/scaffold).
+    // The first build compiles the Onyx crates for the scaffold (once per target directory).
     let (i, line) = dev.wait_for(
         "the plugin running at speed 1",
         0,
         Duration::from_secs(900),
         |l| progress(l).is_some_and(|(_, _, speed)| speed == 1.0),
     );
-    let (steps_before, x_before, _) = progress(&line).unwrap();
+    let (steps_before, travelled_before, _) = progress(&line).unwrap();
     assert!(
         dev.lines()[..i]
             .iter()
-            .any(|l| l.contains("loaded plugin library") && l.contains("dev_loop_probe")),
+            .any(|l| l.contains("loaded plugin library") && l.contains("fixture_dev_loop_probe")),
         "{}",
         dev.stderr_tail()
     );
@@ -351,11 +355,11 @@ fn dev_rebuilds_and_hot_reloads_a_scaffolded_plugin_on_save() {
     let (j, line) = dev.wait_for("progress at speed 2", r, Duration::from_secs(10), |l| {
         progress(l).is_some_and(|(_, _, speed)| speed == 2.0)
     });
-    let (steps_after, x_after, _) = progress(&line).unwrap();
+    let (steps_after, travelled_after, _) = progress(&line).unwrap();
     assert!(
-        steps_after > steps_at_reload && x_after > x_before,
-        "state and world carried over: before {steps_before} steps x={x_before}, \
-         after {steps_after} steps x={x_after}\n{}",
+        steps_after > steps_at_reload && travelled_after > travelled_before,
+        "state and world carried over: before {steps_before} steps {travelled_before} m, \
+         after {steps_after} steps {travelled_after} m\n{}",
         dev.stderr_tail()
     );
 

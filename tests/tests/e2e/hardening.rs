@@ -433,3 +433,192 @@ fn the_library_check_passes_every_real_library_it_is_shown() {
         refused.join("\n")
     );
 }
+
+/// A plugin library with one field changed the way the fuzzer found crashes the system loader
+/// (each of these ended the process with a segfault or an `ld.so` assertion before the host
+/// checked libraries): the host refuses each with exit 2 and one sentence, and nothing crashes.
+#[test]
+fn damaged_libraries_are_refused_before_the_system_loader_sees_them() {
+    use object::elf;
+    use object::read::elf::{Dyn as _, FileHeader as _, ProgramHeader as _};
+    use object::Endianness;
+
+    let original = std::fs::read(plugin_library("fixture-native")).unwrap();
+    let header = elf::FileHeader64::<Endianness>::parse(&*original).unwrap();
+    let endian = header.endian().unwrap();
+    let headers = header.program_headers(endian, &*original).unwrap();
+    let phoff = header.e_phoff(endian) as usize;
+    let phdr_at = |i: usize| phoff + i * 56;
+    let loads: Vec<(u64, u64, u64)> = headers
+        .iter()
+        .filter(|p| p.p_type(endian) == elf::PT_LOAD)
+        .map(|p| (p.p_vaddr(endian), p.p_offset(endian), p.p_filesz(endian)))
+        .collect();
+    let offset_of = |addr: u64| {
+        loads
+            .iter()
+            .find(|(v, _, n)| *v <= addr && addr < v + n)
+            .map(|(v, o, _)| (o + (addr - v)) as usize)
+            .expect("address in a segment")
+    };
+    let dynamic_index = headers
+        .iter()
+        .position(|p| p.p_type(endian) == elf::PT_DYNAMIC)
+        .unwrap();
+    let dynamic_at = headers[dynamic_index].p_offset(endian) as usize;
+    let entries = headers[dynamic_index]
+        .dynamic(endian, &*original)
+        .unwrap()
+        .unwrap();
+    let entry = |tag: u32| {
+        let i = entries
+            .iter()
+            .position(|d| d.d_tag(endian) == u64::from(tag))
+            .unwrap_or_else(|| panic!("the fixture has dynamic tag {tag:#x}"));
+        (dynamic_at + i * 16, entries[i].d_val(endian))
+    };
+    let put_u64 = |bytes: &mut Vec<u8>, at: usize, value: u64| {
+        bytes[at..at + 8].copy_from_slice(&value.to_le_bytes())
+    };
+    let get_u64 =
+        |bytes: &[u8], at: usize| u64::from_le_bytes(bytes[at..at + 8].try_into().unwrap());
+    let first_load = headers
+        .iter()
+        .position(|p| p.p_type(endian) == elf::PT_LOAD)
+        .unwrap();
+    let second_load = headers
+        .iter()
+        .enumerate()
+        .filter(|(_, p)| p.p_type(endian) == elf::PT_LOAD)
+        .nth(1)
+        .unwrap()
+        .0;
+
+    type Patch = Box<dyn Fn(&mut Vec<u8>)>;
+    let patches: Vec<(&str, Patch)> = vec![
+        ("symbol versions lost", {
+            let (at, _) = entry(elf::DT_VERSYM);
+            Box::new(move |b| put_u64(b, at, 0x6f27_fff0))
+        }),
+        ("relocation entry size lost", {
+            let (at, _) = entry(elf::DT_RELAENT);
+            Box::new(move |b| put_u64(b, at, 0x4000_0009))
+        }),
+        ("relocation table lost", {
+            let (at, _) = entry(elf::DT_RELA);
+            Box::new(move |b| put_u64(b, at, 0x807))
+        }),
+        ("initialiser array overrun", {
+            let (at, size) = entry(elf::DT_INIT_ARRAYSZ);
+            Box::new(move |b| put_u64(b, at + 8, size + 0x8000))
+        }),
+        ("needed-versions count", {
+            let (at, count) = entry(elf::DT_VERNEEDNUM);
+            Box::new(move |b| put_u64(b, at + 8, count + (1 << 40)))
+        }),
+        ("dynamic section moved", {
+            let at = phdr_at(dynamic_index) + 16;
+            Box::new(move |b| {
+                let v = get_u64(b, at);
+                put_u64(b, at, v + 6)
+            })
+        }),
+        ("segment unreadable", {
+            let at = phdr_at(first_load) + 4;
+            Box::new(move |b| b[at..at + 4].copy_from_slice(&0u32.to_le_bytes()))
+        }),
+        ("segment maps the wrong file bytes", {
+            let at = phdr_at(second_load) + 8;
+            Box::new(move |b| {
+                let v = get_u64(b, at);
+                put_u64(b, at, v + 0x1_0000)
+            })
+        }),
+        ("PLT slot moved", {
+            let (_, jmprel) = entry(elf::DT_JMPREL);
+            let at = offset_of(jmprel);
+            Box::new(move |b| {
+                let v = get_u64(b, at);
+                put_u64(b, at, v + 8)
+            })
+        }),
+        ("pointer far outside", {
+            let (_, rela) = entry(elf::DT_RELA);
+            let at = offset_of(rela) + 16;
+            Box::new(move |b| {
+                let v = get_u64(b, at);
+                put_u64(b, at, v + 0x7c00_0000_0000)
+            })
+        }),
+        ("needed versions from an unknown library", {
+            let (_, verneed) = entry(elf::DT_VERNEED);
+            let at = offset_of(verneed) + 4;
+            Box::new(move |b| {
+                let v = u32::from_le_bytes(b[at..at + 4].try_into().unwrap());
+                b[at..at + 4].copy_from_slice(&(v + 1).to_le_bytes())
+            })
+        }),
+    ];
+    let dir = tempfile::tempdir().unwrap();
+    for (what, patch) in &patches {
+        let mut bytes = original.clone();
+        patch(&mut bytes);
+        assert_ne!(bytes, original, "{what}: the patch changed something");
+        let path = dir.path().join("libdamaged.so");
+        std::fs::write(&path, &bytes).unwrap();
+        let out = onyx(&[
+            "run",
+            "--headless",
+            "--frames",
+            "1",
+            "--plugin",
+            path.to_str().unwrap(),
+        ]);
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(2), "{what}: {err}");
+        let lines = onyx_lines(&out);
+        assert_eq!(lines.len(), 1, "{what}: {err}");
+        assert!(lines[0].contains("is damaged"), "{what}: {}", lines[0]);
+        assert!(!err.contains("native crash"), "{what}: {err}");
+    }
+}
+
+/// Keeps the window open while it has "unsaved work", then quits when told it was saved.
+#[derive(Default)]
+struct Careful {
+    unsaved: bool,
+}
+
+impl Plugin for Careful {
+    fn on_event(&mut self, ctx: &mut onyx_plugin_api::Ctx, event: &onyx_plugin_api::Event) {
+        use onyx_plugin_api::{Event, WindowEvent};
+        if matches!(event, Event::Window(WindowEvent::CloseRequested)) && self.unsaved {
+            ctx.prevent_close();
+            // "Saved": the next close goes through.
+            self.unsaved = false;
+        }
+    }
+}
+
+#[test]
+fn a_plugin_with_unsaved_work_keeps_the_window_open_to_ask() {
+    use onyx_plugin_api::WindowEvent;
+    let mut host = HeadlessHost::new();
+    host.host_mut()
+        .add_plugin("careful", Careful { unsaved: true })
+        .unwrap();
+    host.step(1);
+    host.host_mut().push_event(WindowEvent::CloseRequested);
+    assert!(!host.host_mut().frame(1.0 / 60.0).quit, "kept open to ask");
+    host.host_mut().push_event(WindowEvent::CloseRequested);
+    assert!(
+        host.host_mut().frame(1.0 / 60.0).quit,
+        "nothing left to ask: it closes"
+    );
+
+    // Without such a plugin a close request ends the run after its frame, as before.
+    let mut host = HeadlessHost::new();
+    host.step(1);
+    host.host_mut().push_event(WindowEvent::CloseRequested);
+    assert!(host.host_mut().frame(1.0 / 60.0).quit);
+}

@@ -361,3 +361,127 @@ fn the_onyx_binary_feeds_the_console_that_plugins_read() {
     // People still get the log on stderr.
     assert!(String::from_utf8_lossy(&out.stderr).contains("console marker two"));
 }
+
+/// Runs `f` with a `Ctx` on `host`'s services, as a plugin call would.
+fn with_ctx<R>(host: &mut HeadlessHost, f: impl FnOnce(&mut onyx_plugin_api::Ctx<'_>) -> R) -> R {
+    host.host_mut().with_services("tool", |services| {
+        onyx_plugin_api::__ffi::with_ctx(services, f)
+    })
+}
+
+/// A new or opened scene started a fresh hecs world, so handles began again: a handle kept
+/// from before named the next scene's first entity (the editor moved the Sun with its view).
+#[test]
+fn a_handle_kept_across_new_and_open_names_nothing() {
+    let dir = tempfile::tempdir().unwrap();
+    let scene = dir.path().join("two.ron");
+    std::fs::write(
+        &scene,
+        r#"(version: 2, entities: [(name: Some("Sun")), (name: Some("Moon"))])"#,
+    )
+    .unwrap();
+    let mut host = HeadlessHost::new();
+    with_ctx(&mut host, |ctx| {
+        let before = ctx.spawn(Name::new("camera")).unwrap();
+        ctx.new_scene().unwrap();
+        assert!(!ctx.contains(before), "New emptied the world");
+        let in_new = ctx.spawn(Name::new("camera")).unwrap();
+        ctx.open_scene(&scene.display().to_string()).unwrap();
+        for kept in [before, in_new] {
+            assert!(
+                !ctx.contains(kept),
+                "{kept:?} names an entity of the opened scene"
+            );
+            assert!(ctx.get::<Name>(kept).is_err());
+        }
+        assert_eq!(ctx.entity_list().len(), 2, "the scene's two entities");
+    });
+}
+
+/// Clicks in the editor picked by bounding spheres (or by physics, which Edit mode does not
+/// step): `pick` meets what each entity shows — meshes and colliders at world poses.
+#[test]
+fn pick_meets_meshes_and_colliders_at_world_poses_without_a_physics_step() {
+    use onyx_plugin_api::glam::{Quat, Vec3};
+    use onyx_plugin_api::{Collider, MeshId, MeshRenderer, Parent};
+    let mut host = HeadlessHost::new();
+    with_ctx(&mut host, |ctx| {
+        let cube = ctx
+            .spawn((
+                Name::new("cube"),
+                Transform::from_xyz(0.0, 0.0, -5.0),
+                MeshRenderer::new(MeshId::CUBE),
+            ))
+            .unwrap();
+        let ball = ctx
+            .spawn((
+                Name::new("ball collider"),
+                Transform::from_xyz(3.0, 0.0, -5.0),
+                Collider::sphere(0.5),
+            ))
+            .unwrap();
+        let floor = ctx
+            .spawn((
+                Name::new("floor"),
+                Transform::from_xyz(0.0, -1.0, 0.0).with_scale(Vec3::new(10.0, 1.0, 10.0)),
+                MeshRenderer::new(MeshId::PLANE),
+                Collider::plane(),
+            ))
+            .unwrap();
+        // A child one metre along its parent's X; the parent turned 90° about Y puts it at
+        // (0, 3, -6).
+        let arm = ctx
+            .spawn((
+                Name::new("arm"),
+                Transform::from_xyz(0.0, 3.0, -5.0)
+                    .with_rotation(Quat::from_rotation_y(std::f32::consts::FRAC_PI_2)),
+            ))
+            .unwrap();
+        let hand = ctx
+            .spawn((
+                Name::new("hand"),
+                Transform::from_xyz(1.0, 0.0, 0.0),
+                MeshRenderer::new(MeshId::SPHERE),
+                Parent(arm),
+            ))
+            .unwrap();
+
+        let hit = ctx.pick(Vec3::ZERO, Vec3::NEG_Z, 100.0).expect("the cube");
+        assert_eq!(hit.entity, cube);
+        assert!((hit.distance - 4.5).abs() < 1e-4, "{hit:?}");
+        assert!((hit.normal - Vec3::Z).length() < 1e-4, "{hit:?}");
+        let hit = ctx.pick(Vec3::new(3.0, 0.0, 0.0), Vec3::NEG_Z, 100.0);
+        assert_eq!(hit.map(|h| h.entity), Some(ball), "a collider alone");
+        let hit = ctx
+            .pick(Vec3::new(0.0, 3.0, 0.0), Vec3::NEG_Z, 100.0)
+            .expect("the hand");
+        assert_eq!(hit.entity, hand);
+        assert!(
+            (hit.distance - 5.5).abs() < 1e-4,
+            "at its world pose: {hit:?}"
+        );
+        let down = Vec3::new(0.0, -1.0, -1.0).normalize();
+        let hit = ctx.pick(Vec3::ZERO, down, 100.0).expect("the floor");
+        assert_eq!(hit.entity, floor);
+        assert!((hit.distance - 2f32.sqrt()).abs() < 1e-3, "{hit:?}");
+        // The floor's half-space collider does not reach past its mesh, nor up into the sky.
+        assert!(ctx.pick(Vec3::ZERO, Vec3::Y, 100.0).is_none(), "the sky");
+        assert!(
+            ctx.pick(Vec3::new(0.0, 0.0, 20.0), down, 100.0).is_none(),
+            "past the floor"
+        );
+        assert!(
+            ctx.pick(Vec3::ZERO, Vec3::NEG_Z, 4.0).is_none(),
+            "beyond the distance"
+        );
+
+        let cube_box = ctx.local_bounds(cube).expect("a cube has bounds");
+        assert_eq!(
+            (cube_box.min, cube_box.max),
+            (Vec3::splat(-0.5), Vec3::splat(0.5))
+        );
+        let ball_box = ctx.local_bounds(ball).expect("a collider has bounds");
+        assert_eq!(ball_box.max, Vec3::splat(0.5));
+        assert!(ctx.local_bounds(arm).is_none(), "nothing shown, no bounds");
+    });
+}

@@ -251,6 +251,44 @@ fn a_faulted_plugin_is_revived_by_a_reload() {
     );
 }
 
+/// A plugin revived by a good rebuild after a panic sat idle: its fresh state never got
+/// `on_init` (which spawns and sets up), and nothing said it had started over.
+#[test]
+fn a_revived_plugin_gets_on_init_again_and_the_host_says_it_starts_empty() {
+    let config = HostConfig::default().setting(NAME, "panic_after", "7");
+    let (mut host, dir, path) = running_v1(config);
+    host.step(5);
+    assert!(host
+        .plugin_status(NAME)
+        .is_some_and(PluginStatus::is_faulted));
+    let staging = dir.path().join("staging.so");
+    std::fs::copy(build(2), &staging).unwrap();
+    std::fs::rename(&staging, &path).unwrap();
+    let seq = onyx_runtime::console::console_log().last_seq();
+    host.host_mut().reload_plugin(NAME).unwrap();
+    host.step(2);
+    let (e, _) = host
+        .find::<onyx_plugin_api::Name>("reloadable")
+        .expect("the plugin's entity");
+    let blobs = host
+        .get::<onyx_runtime::world::PluginComponents>(e)
+        .unwrap();
+    let published: serde_json::Value =
+        serde_json::from_slice(&blobs.0["fixture_reload.progress"].bytes).unwrap();
+    assert_eq!(
+        published["inits"], 1,
+        "the revived build ran on_init once: {published}"
+    );
+    let said = onyx_runtime::console::console_log()
+        .since(seq)
+        .into_iter()
+        .any(|line| line.message.contains("revived") && line.message.contains("empty state"));
+    assert!(
+        said,
+        "the host logs that the plugin was revived with empty state"
+    );
+}
+
 #[test]
 fn an_in_process_plugin_cannot_be_reloaded() {
     let mut host = HeadlessHost::new();

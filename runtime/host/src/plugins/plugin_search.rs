@@ -42,8 +42,9 @@ impl PluginSearchPath {
             .unwrap_or_else(|| PathBuf::from("target"));
         dirs.push(target.join("debug"));
         dirs.push(target.join("release"));
-        dirs.dedup();
-        Self { dirs }
+        Self {
+            dirs: without_repeats(dirs),
+        }
     }
 
     /// A search path of exactly these directories.
@@ -66,6 +67,25 @@ impl PluginSearchPath {
             .cloned()
             .ok_or(candidates)
     }
+}
+
+/// `dirs` with each directory once, at its first place: the same directory named twice
+/// (`target/debug` beside the executable's own `/…/target/debug`) is searched once.
+fn without_repeats(dirs: Vec<PathBuf>) -> Vec<PathBuf> {
+    let key = |dir: &Path| {
+        dir.canonicalize()
+            .or_else(|_| std::path::absolute(dir))
+            .unwrap_or_else(|_| dir.to_path_buf())
+    };
+    let mut seen = Vec::new();
+    dirs.into_iter()
+        .filter(|dir| {
+            let k = key(dir);
+            let new = !seen.contains(&k);
+            seen.push(k);
+            new
+        })
+        .collect()
 }
 
 /// The file cargo builds for cdylib crate `name` on this platform: `libNAME.so`,
@@ -110,6 +130,40 @@ mod tests {
         assert!(looks_like_path(&file));
         assert!(looks_like_path("./x"));
         assert!(!looks_like_path("hello"));
+    }
+
+    /// `onyx plugins` listed `target/debug` twice: once as the executable's folder, once as
+    /// `./target/debug`.
+    #[test]
+    fn a_directory_named_twice_is_searched_once() {
+        let dir = tempfile::tempdir().unwrap();
+        let inner = dir.path().join("debug");
+        std::fs::create_dir(&inner).unwrap();
+        let cwd = std::env::current_dir().unwrap();
+        let relative = pathdiff(&inner, &cwd);
+        let other = tempfile::tempdir().unwrap();
+        let dirs = without_repeats(vec![
+            inner.clone(),
+            other.path().to_path_buf(),
+            relative,
+            inner.join("."),
+        ]);
+        assert_eq!(dirs, vec![inner, other.path().to_path_buf()]);
+    }
+
+    /// `path` relative to `base` (both absolute), with `..` as needed.
+    fn pathdiff(path: &Path, base: &Path) -> PathBuf {
+        let path: Vec<_> = path.components().collect();
+        let base: Vec<_> = base.components().collect();
+        let common = path.iter().zip(&base).take_while(|(a, b)| a == b).count();
+        let mut out = PathBuf::new();
+        for _ in common..base.len() {
+            out.push("..");
+        }
+        for part in &path[common..] {
+            out.push(part);
+        }
+        out
     }
 
     #[test]

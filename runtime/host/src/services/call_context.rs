@@ -194,6 +194,16 @@ impl HostServices for CallContext<'_> {
         self.state.io.quit_requested = true;
     }
 
+    fn prevent_close(&mut self) {
+        if self.state.io.close_requested && self.state.io.close_kept_by.is_none() {
+            tracing::info!(
+                plugin = self.plugin,
+                "plugin keeps the window open (it has something to ask first)"
+            );
+            self.state.io.close_kept_by = Some(self.plugin.to_owned());
+        }
+    }
+
     fn set_paused(&mut self, paused: bool) {
         self.state.clock.set_paused(paused);
     }

@@ -4,12 +4,13 @@
 use std::path::Path;
 
 use onyx_plugin_api::glam::Vec2;
+use onyx_plugin_api::glam::Vec3;
 use onyx_plugin_api::host::{Blob, PlayCommand, ToolServices};
 use onyx_plugin_api::tools::{
-    Diagnostics, EntityList, LogLine, PlayMode, PluginInfo, PluginState, Ray, RenderOverrides,
-    ScriptInfo,
+    Bounds, Diagnostics, EntityList, LogLine, PlayMode, PluginInfo, PluginState, Ray,
+    RenderOverrides, ScriptInfo,
 };
-use onyx_plugin_api::{BuiltinValue, CtxError, Entity, Name, PlatformEvent};
+use onyx_plugin_api::{BuiltinValue, CtxError, Entity, Name, PlatformEvent, RayHit};
 
 use super::CallContext;
 use crate::entity_id::to_api;
@@ -67,22 +68,26 @@ impl ToolServices for CallContext<'_> {
 
     fn new_scene(&mut self) -> Result<(), CtxError> {
         tracing::info!(plugin = self.plugin, "new scene");
-        self.state.replace_world(hecs::World::new());
+        let old = self.state.world.all_entities();
+        self.state.retire_entities(&old);
         self.state.tools.scene_path = None;
         Ok(())
     }
 
     fn open_scene(&mut self, path: &str) -> Result<(), CtxError> {
         let path = Path::new(path);
-        let mut world = hecs::World::new();
+        // The scene spawns beside the old entities (and takes itself back on error), then
+        // the old ones go: handles are never reused, so one kept from before names nothing.
+        let old = self.state.world.all_entities();
+        let world = &mut self.state.world;
         let opened = scene::read_scene(path).and_then(|file| {
-            let count = scene::spawn_scene(&mut world, &mut self.state.world.assets, &file, path)?;
+            let count = scene::spawn_scene(&mut world.ecs, &mut world.assets, &file, path)?;
             Ok((count, file.physics))
         });
         match opened {
             Ok((count, physics)) => {
                 tracing::info!(path = %path.display(), entities = count, "opened scene");
-                self.state.replace_world(world);
+                self.state.retire_entities(&old);
                 if let Some(physics) = physics {
                     self.state.clock.set_fixed_hz(physics.fixed_hz());
                     self.state.physics.set_scene_physics(physics);
@@ -175,5 +180,22 @@ impl ToolServices for CallContext<'_> {
 
     fn render_overrides(&self) -> RenderOverrides {
         self.state.view.overrides
+    }
+
+    fn pick(&mut self, origin: Vec3, direction: Vec3, max_distance: f32) -> Option<RayHit> {
+        let state = &mut *self.state;
+        crate::tools::pick(
+            &state.world,
+            &mut state.tools.mesh_bounds,
+            origin,
+            direction,
+            max_distance,
+        )
+    }
+
+    fn local_bounds(&mut self, entity: Entity) -> Option<Bounds> {
+        let state = &mut *self.state;
+        let e = state.world.entity(entity)?;
+        crate::tools::local_bounds(&state.world, &mut state.tools.mesh_bounds, e)
     }
 }

@@ -18,6 +18,10 @@ pub struct FrameIo {
     pub input: InputState,
     /// Set when a plugin or the window asked to quit.
     pub quit_requested: bool,
+    /// While the window's close request is being delivered.
+    pub close_requested: bool,
+    /// The plugin that kept the window open after a close request (`Ctx::prevent_close`).
+    pub close_kept_by: Option<String>,
     /// Plugin changes asked for during the frame, carried out after it.
     pub plugin_requests: Vec<PluginRequest>,
     /// Debug lines plugins drew this frame.
@@ -37,6 +41,8 @@ impl Default for FrameIo {
             events: Vec::new(),
             input: InputState::default(),
             quit_requested: false,
+            close_requested: false,
+            close_kept_by: None,
             plugin_requests: Vec::new(),
             debug_lines: Vec::new(),
             sent: HashMap::new(),

@@ -53,10 +53,12 @@ impl HostState {
         }
     }
 
-    /// Replaces the whole world (new or opened scene): physics rebuilt from the new
-    /// components, the chosen camera forgotten, Stop no longer restores an older world.
-    pub fn replace_world(&mut self, ecs: hecs::World) {
-        self.world.replace(ecs);
+    /// Replaces the whole world (new or opened scene) by despawning `old`, the entities
+    /// there were before (an opened scene has spawned its own beside them): physics rebuilt
+    /// from the components, the chosen camera forgotten, Stop no longer restores an older
+    /// world. Handles are never reused, so a plugin's handle from before names nothing.
+    pub fn retire_entities(&mut self, old: &[hecs::Entity]) {
+        self.world.despawn_all_of(old);
         self.after_world_replaced();
         self.tools.play.forget_snapshot();
     }

@@ -4,6 +4,7 @@ use std::path::PathBuf;
 
 use onyx_plugin_api::tools::{Diagnostics, PluginInfo};
 
+use super::MeshBounds;
 use crate::diagnostics::FrameDiagnostics;
 use crate::play_mode::PlaySession;
 use crate::scripts::{ScriptRegistry, ScriptRunner};
@@ -27,8 +28,11 @@ pub struct ToolState {
     /// Bumped each time the whole world is replaced (new or opened scene, Stop), so
     /// per-entity bookkeeping knows its handles are stale.
     pub world_generation: u64,
-    /// The scene file the world was last opened from or saved to.
+    /// The scene file the world was last opened from or saved to (or loaded from with
+    /// `--scene`).
     pub scene_path: Option<PathBuf>,
+    /// The meshes' shapes, for picking and outlines.
+    pub mesh_bounds: MeshBounds,
 }
 
 impl ToolState {

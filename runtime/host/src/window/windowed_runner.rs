@@ -223,10 +223,10 @@ impl ApplicationHandler for App<'_> {
         }
         match event {
             WindowEvent::CloseRequested => {
+                // Plugins see the event in the next frame; it quits unless one of them keeps
+                // the window open to ask about unsaved work (`Ctx::prevent_close`).
                 self.host.push_event(OnyxWindowEvent::CloseRequested);
-                // Run one last frame so plugins see the event, then leave.
                 self.run_frame(event_loop);
-                event_loop.exit();
             }
             WindowEvent::Resized(size) => {
                 self.summary.final_size = (size.width, size.height);

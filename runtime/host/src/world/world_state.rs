@@ -69,9 +69,19 @@ impl WorldState {
         }
     }
 
-    /// Replaces every entity (a new or opened scene, a play-mode restore).
-    pub fn replace(&mut self, ecs: hecs::World) {
-        self.ecs = ecs;
+    /// Every entity, in no particular order.
+    pub fn all_entities(&self) -> Vec<hecs::Entity> {
+        self.ecs.iter().map(|e| e.entity()).collect()
+    }
+
+    /// Despawns `entities` (all there were, for a new or opened scene). The world goes on
+    /// handing out handles after theirs: a fresh `hecs::World` would start over, and a handle
+    /// kept from before would name a newcomer (the editor's camera handle from an empty scene
+    /// named the first entity of the next scene opened, and moved it with the view).
+    pub fn despawn_all_of(&mut self, entities: &[hecs::Entity]) {
+        for &e in entities {
+            let _ = self.ecs.despawn(e);
+        }
         self.hierarchy.invalidate();
     }
 

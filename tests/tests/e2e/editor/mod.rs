@@ -439,8 +439,10 @@ fn the_editor_matches_its_golden_image() {
     assert_golden("editor", &image);
 }
 
+/// The Console of a fresh editor opened on a yellow egui-wgpu warning about an sRGB
+/// framebuffer: a clean start must log no warning at all.
 #[test]
-fn a_windowed_editor_run_saves_a_screenshot() {
+fn a_windowed_editor_starts_without_a_warning_and_saves_a_screenshot() {
     let dir = tempfile::tempdir().unwrap();
     let png = dir.path().join("editor.png");
     let layout: PathBuf = dir.path().join("layout.json");
@@ -463,6 +465,12 @@ fn a_windowed_editor_run_saves_a_screenshot() {
         .expect("onyx runs");
     let err = String::from_utf8_lossy(&out.stderr);
     assert!(out.status.success(), "{err}");
+    // `tracing`'s warnings (Mesa's own lines start `WARNING:` and are not ours).
+    let warnings: Vec<&str> = err
+        .lines()
+        .filter(|l| l.contains("WARN") && !l.contains("WARNING"))
+        .collect();
+    assert!(warnings.is_empty(), "a clean start warned: {warnings:#?}");
     let image = onyx_render::image::open(&png).unwrap().to_rgba8();
     assert_eq!(image.dimensions(), (640, 360));
     let first = image.get_pixel(0, 0);
@@ -734,4 +742,6 @@ fn the_viewport_camera_flies_zooms_and_frames_the_selection() {
     );
 }
 
+mod files;
 mod scene_graph;
+mod viewport;

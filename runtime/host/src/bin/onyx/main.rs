@@ -2,6 +2,7 @@
 
 mod cli;
 mod dev;
+mod logging;
 mod new_plugin;
 
 use std::process::ExitCode;
@@ -28,18 +29,7 @@ enum Failure {
 }
 
 fn main() -> ExitCode {
-    let filter = tracing_subscriber::EnvFilter::try_from_default_env()
-        .unwrap_or_else(|_| tracing_subscriber::EnvFilter::new("info"));
-    {
-        use tracing_subscriber::layer::SubscriberExt as _;
-        use tracing_subscriber::util::SubscriberInitExt as _;
-        // stderr for people, the console ring buffer for tools (the editor's console panel).
-        tracing_subscriber::registry()
-            .with(filter)
-            .with(tracing_subscriber::fmt::layer().with_writer(std::io::stderr))
-            .with(onyx_runtime::console::ConsoleLayer)
-            .init();
-    }
+    logging::install();
     let cli = Cli::parse();
     if matches!(cli.command, Command::Run(_) | Command::DevHost(_)) {
         onyx_runtime::watchdog::install_crash_report();
@@ -220,9 +210,14 @@ fn screenshot(
     Ok(())
 }
 
+/// Libraries of the test suite's fixture plugins (`tests/fixtures/`) are named so; `onyx
+/// plugins` does not list them.
+const TEST_FIXTURE_PREFIX: &str = "fixture_";
+
 fn list_plugins() {
     let search = PluginSearchPath::from_env();
     println!("plugin search path (first match wins):");
+    let mut fixtures = 0;
     for dir in search.dirs() {
         println!("  {}", dir.display());
         let Ok(entries) = std::fs::read_dir(dir) else {
@@ -238,9 +233,15 @@ fn list_plugins() {
             })
             .map(|p| plugin_search::name_from_path(&p))
             .collect();
+        let all = found.len();
+        found.retain(|name| !name.starts_with(TEST_FIXTURE_PREFIX));
+        fixtures += all - found.len();
         found.sort();
         for name in found {
             println!("    {name}");
         }
+    }
+    if fixtures > 0 {
+        println!("({fixtures} test fixture libraries, {TEST_FIXTURE_PREFIX}*, not listed)");
     }
 }

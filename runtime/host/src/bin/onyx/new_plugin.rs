@@ -111,18 +111,26 @@ const RESERVED: &[&str] = &[
 /// Type names the generated `lib.rs` already uses: a plugin type may not shadow them.
 const TAKEN_TYPE_NAMES: &[&str] = &[
     "AttachInfo",
+    "Camera",
     "Ctx",
+    "CtxError",
     "Deserialize",
     "Entity",
+    "HeadlessHost",
+    "Light",
+    "Material",
+    "MeshId",
+    "MeshRenderer",
     "Name",
     "Option",
     "Plugin",
     "PluginError",
+    "Quat",
     "Result",
     "Serialize",
     "Transform",
     "Vec",
-    "HeadlessHost",
+    "Vec3",
 ];
 
 /// Runs `onyx new-plugin`.
@@ -321,12 +329,32 @@ mod tests {
         assert_eq!(type_name("bouncer"), "Bouncer");
         assert_eq!(type_name("plugin"), "PluginPlugin");
         assert_eq!(type_name("transform"), "TransformPlugin");
+        assert_eq!(type_name("camera"), "CameraPlugin");
     }
 
     #[test]
     fn paths_become_toml_strings() {
         assert_eq!(toml_string(Path::new("/a/b")), "\"/a/b\"");
         assert_eq!(toml_string(Path::new("C:\\x\"y")), "\"C:\\\\x\\\"y\"");
+    }
+
+    /// The generated crate builds with this workspace's settings, so that it can share the
+    /// checkout's target directory (and reuse every dependency already compiled there).
+    #[test]
+    fn the_template_builds_with_the_workspace_profile() {
+        let workspace =
+            std::fs::read_to_string(Path::new(env!("CARGO_MANIFEST_DIR")).join("../../Cargo.toml"))
+                .unwrap();
+        let profile = &workspace[workspace.find("\n[profile.").expect("a [profile] table")..];
+        for line in profile.lines().map(str::trim) {
+            if line.is_empty() || line.starts_with('#') {
+                continue;
+            }
+            assert!(
+                CARGO_TOML.lines().any(|l| l.trim() == line),
+                "the template's Cargo.toml lacks `{line}` from the workspace's profile"
+            );
+        }
     }
 
     #[test]
