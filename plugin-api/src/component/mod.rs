@@ -7,7 +7,8 @@
 //!   label, local pose and place in the scene graph; `global_transform.rs`: the world pose
 //!   the host computes from them.
 //! - `mesh_renderer.rs` ([`MeshRenderer`], [`Material`]), `mesh_id.rs` ([`MeshId`],
-//!   [`TextureId`]), `shading_mode.rs`, `camera.rs`, `light.rs`: what the renderer draws.
+//!   [`TextureId`]), `shading_mode.rs`, `alpha_mode.rs`, `camera.rs`, `light.rs`: what the
+//!   renderer draws.
 //! - `debug_line.rs`: [`DebugLine`], one frame's debug drawing.
 //! - `rigid_body.rs` ([`RigidBody`], [`BodyKind`], [`LockedAxes`]), `collider.rs`
 //!   ([`Collider`], [`ColliderShape`]), `ray_hit.rs` ([`RayHit`]): physics.
@@ -16,6 +17,7 @@
 //! - `bundle.rs`: [`Bundle`], components spawned together.
 //! - `entity_transform.rs`, `blob_format.rs`: rows of bulk queries, raw-blob encodings.
 
+mod alpha_mode;
 mod blob_format;
 mod builtin;
 mod builtins;
@@ -38,6 +40,7 @@ mod rigid_body;
 mod shading_mode;
 mod transform;
 
+pub use alpha_mode::AlphaMode;
 pub use blob_format::BlobFormat;
 pub use builtin::{Builtin, BuiltinFn, BuiltinVisitor, FileRefs, HostRefs, InvalidValue, Listed};
 pub use builtins::{BuiltinId, BuiltinValue};

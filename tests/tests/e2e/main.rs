@@ -21,3 +21,4 @@ mod registry;
 mod reload;
 mod render;
 mod scenes;
+mod shading;
