@@ -114,9 +114,24 @@ impl Ctx<'_> {
         ok(self.host.scene_op(SceneOpFfi::Save, path.into()))
     }
 
+    /// Saves the world to `path` atomically, leaving [`Ctx::scene_path`] as it is: an
+    /// autosave, a backup or an export, not a "Save As".
+    pub fn save_scene_copy(&mut self, path: &str) -> Result<(), CtxError> {
+        ok(self.host.scene_op(SceneOpFfi::SaveCopy, path.into()))
+    }
+
     /// The scene file the world was last opened from or saved to (`None` for a new world).
     pub fn scene_path(&mut self) -> Option<String> {
         self.host.scene_path().into_option().map(Into::into)
+    }
+
+    /// Names the file the world belongs to without reading or writing it (`None`: an
+    /// untitled world): a world restored from a recovery copy is named after the scene it
+    /// was a copy of, so that Save writes there.
+    pub fn set_scene_path(&mut self, path: Option<&str>) -> Result<(), CtxError> {
+        ok(self
+            .host
+            .scene_op(SceneOpFfi::Rename, path.unwrap_or_default().into()))
     }
 
     // ----- plugins, diagnostics, console -----

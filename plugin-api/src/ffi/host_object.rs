@@ -385,6 +385,11 @@ impl<H: HostServices + ?Sized> HostObject for HostBridge<'_, H> {
             SceneOpFfi::New => self.0.new_scene(),
             SceneOpFfi::Open => self.0.open_scene(path.as_str()),
             SceneOpFfi::Save => self.0.save_scene(path.as_str()),
+            SceneOpFfi::SaveCopy => self.0.save_scene_copy(path.as_str()),
+            SceneOpFfi::Rename => {
+                let path = path.as_str();
+                self.0.set_scene_path((!path.is_empty()).then_some(path))
+            }
         })
     }
 

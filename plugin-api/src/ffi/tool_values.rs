@@ -71,6 +71,10 @@ pub enum SceneOpFfi {
     Open,
     /// Save the world to the file.
     Save,
+    /// Save the world to the file without making it the world's file.
+    SaveCopy,
+    /// Name the file the world belongs to (empty: none).
+    Rename,
 }
 
 /// Which report `host_report` returns (as JSON).

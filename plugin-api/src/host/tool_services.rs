@@ -44,9 +44,17 @@ pub trait ToolServices {
     fn save_scene(&mut self, path: &str) -> Result<(), CtxError> {
         Err(unsupported("save_scene"))
     }
+    /// Saves the world to `path`, atomically, without making it the world's file.
+    fn save_scene_copy(&mut self, path: &str) -> Result<(), CtxError> {
+        Err(unsupported("save_scene_copy"))
+    }
     /// The file the world was last opened from or saved to.
     fn scene_path(&mut self) -> Option<String> {
         None
+    }
+    /// Names the file the world belongs to (`None`: an untitled world).
+    fn set_scene_path(&mut self, path: Option<&str>) -> Result<(), CtxError> {
+        Err(unsupported("set_scene_path"))
     }
     /// The loaded plugins.
     fn plugin_infos(&mut self) -> Vec<PluginInfo> {

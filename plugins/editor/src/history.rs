@@ -62,6 +62,9 @@ pub struct History {
     /// Entities recreated (old handle, new handle) by the edit being applied: the rest of a
     /// group is pointed at the new ones before it runs.
     recreated: Vec<(Entity, Entity)>,
+    /// Counts every change to the stacks: the world the editor shows changed when it did
+    /// (what autosave compares against).
+    revision: u64,
 }
 
 /// Most edits kept.
@@ -75,6 +78,7 @@ impl Default for History {
             saved_at: Some(0),
             last_merge_frame: None,
             recreated: Vec::new(),
+            revision: 0,
         }
     }
 }
@@ -87,6 +91,7 @@ impl History {
         }
         self.redo.clear();
         self.undo.push(command);
+        self.revision += 1;
         if self.undo.len() > LIMIT {
             self.undo.remove(0);
             self.saved_at = self.saved_at.and_then(|depth| depth.checked_sub(1));
@@ -104,6 +109,17 @@ impl History {
     /// The scene was just saved: it is unmodified as it stands.
     pub fn mark_saved(&mut self) {
         self.saved_at = Some(self.undo.len());
+    }
+
+    /// The world holds edits no file has (a scene recovered from an autosaved copy):
+    /// modified until saved, whatever is undone.
+    pub fn mark_modified(&mut self) {
+        self.saved_at = None;
+    }
+
+    /// A number that changes whenever an edit is recorded, merged, undone or redone.
+    pub fn revision(&self) -> u64 {
+        self.revision
     }
 
     /// Records a component change, merged into the previous edit when that changed the same
@@ -128,6 +144,7 @@ impl History {
             if entity == e2 && key == k2 {
                 *new = n2.clone();
                 self.last_merge_frame = Some(frame);
+                self.revision += 1;
                 if self.saved_at == Some(self.undo.len()) {
                     self.saved_at = None; // the saved edit itself changed
                 }
@@ -161,6 +178,7 @@ impl History {
         self.last_merge_frame = None;
         let done = self.apply(ctx, command, true);
         self.recreated.clear();
+        self.revision += 1;
         self.redo.push(done?);
         Ok(())
     }
@@ -173,6 +191,7 @@ impl History {
         self.last_merge_frame = None;
         let done = self.apply(ctx, command, false);
         self.recreated.clear();
+        self.revision += 1;
         self.undo.push(done?);
         Ok(())
     }
@@ -271,6 +290,7 @@ impl History {
         self.redo.clear();
         self.saved_at = Some(0);
         self.last_merge_frame = None;
+        self.revision += 1;
     }
 }
 

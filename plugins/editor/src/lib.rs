@@ -2,11 +2,18 @@
 //! Console and Diagnostics panels, a main menu, undo/redo, a fly camera and a translate
 //! gizmo, and the play toolbar.
 //!
+//! Nothing is lost: Quit, the window's close button, New and Open ask "Save changes?" while
+//! the scene has unsaved edits ([`unsaved_changes`]), and those edits are autosaved to a
+//! recovery copy offered back at the next start after a crash ([`recovery`]).
+//!
 //! Settings: `editor.layout=FILE` (default `.onyx/editor-layout.json`): where the dock
-//! layout is restored from at attach and saved to at detach.
+//! layout is restored from at attach and saved to at detach; `editor.autosave=SECS`
+//! (default 30, 0: off) and `editor.recovery=DIR` (default `.onyx/recovery`): see
+//! [`recovery`].
 
 #![warn(missing_docs)]
 
+pub mod atomic_file;
 pub mod console;
 pub mod create;
 pub mod diagnostics_panel;
@@ -17,18 +24,24 @@ pub mod inspector;
 pub mod json_tree;
 pub mod menu;
 pub mod panel;
+pub mod recovery;
 pub mod state;
+pub mod unsaved_changes;
 pub mod viewport;
 
 use std::path::PathBuf;
 
 use egui_dock::{DockArea, DockState, TabViewer};
-use onyx_plugin_api::{egui, export_plugin, AttachInfo, Ctx, Flow, PlayMode, Plugin, PluginError};
+use onyx_plugin_api::{
+    egui, export_plugin, AttachInfo, Ctx, Event, Flow, PlayMode, Plugin, PluginError, WindowEvent,
+};
 use serde::{Deserialize, Serialize};
 
 use crate::file_dialog::{DialogResult, FilePurpose};
 use crate::panel::Panel;
+use crate::recovery::Recovery;
 use crate::state::EditorState;
+use crate::unsaved_changes::Discarding;
 
 /// The editor plugin.
 pub struct Editor {
@@ -47,11 +60,16 @@ impl Default for Editor {
 
 /// What survives a hot reload of the editor.
 #[derive(Default, Serialize, Deserialize)]
+#[serde(default)]
 struct Kept {
     dock: Option<DockState<Panel>>,
     selection: Vec<u64>,
     recent: Vec<String>,
     camera: viewport::FlyCamera,
+    /// The scene has unsaved edits (the undo history itself does not survive).
+    modified: bool,
+    /// Recovery copies still waiting for an answer.
+    recovery_offers: Vec<recovery::Offer>,
 }
 
 impl Plugin for Editor {
@@ -60,7 +78,12 @@ impl Plugin for Editor {
             .setting("layout")
             .map(PathBuf::from)
             .unwrap_or_else(|| PathBuf::from(panel::DEFAULT_LAYOUT_PATH));
+        // A reload brought the offer still waiting (load_state runs first): keep it.
+        let offers = std::mem::take(&mut self.state.recovery.offers);
+        self.state.recovery = Recovery::from_settings(ctx, info);
+        self.state.recovery.offers = offers;
         if !info.reload {
+            self.state.recovery.look_for_copies();
             match panel::load_layout(&self.state.layout_path) {
                 Ok(Some(dock)) => self.dock = dock,
                 Ok(None) => {}
@@ -74,9 +97,19 @@ impl Plugin for Editor {
         Ok(())
     }
 
+    fn on_event(&mut self, ctx: &mut Ctx, event: &Event) {
+        if matches!(event, Event::Window(WindowEvent::CloseRequested))
+            && self.state.history.is_modified()
+        {
+            ctx.prevent_close();
+            self.state.asking = Some(Discarding::Quit);
+        }
+    }
+
     fn on_update(&mut self, ctx: &mut Ctx, _dt: f32) -> Flow {
         self.state.console.poll(ctx);
         self.state.diagnostics.poll(ctx);
+        self.state.recovery.tick(ctx, &self.state.history);
         Flow::Continue
     }
 
@@ -103,22 +136,41 @@ impl Plugin for Editor {
         if let Some(dialog) = &mut state.file_dialog {
             match dialog.show(ui.ctx()) {
                 DialogResult::Open => {}
-                DialogResult::Cancelled => state.file_dialog = None,
+                DialogResult::Cancelled => {
+                    state.file_dialog = None;
+                    state.after_save = None;
+                }
                 DialogResult::Chosen(path) => {
                     let purpose = dialog.purpose;
                     state.file_dialog = None;
                     match purpose {
-                        FilePurpose::Open => menu::open_scene(ctx, state, &path),
-                        FilePurpose::SaveAs => menu::save_scene(ctx, state, &path),
+                        FilePurpose::Open => {
+                            unsaved_changes::run_or_ask(ctx, state, Discarding::Open(path));
+                        }
+                        FilePurpose::SaveAs => {
+                            menu::save_scene(ctx, state, &path);
+                            // Saved for "Save changes?": the action it was asked for follows.
+                            if let Some(action) = state.after_save.take() {
+                                if !state.history.is_modified() {
+                                    unsaved_changes::run(ctx, state, action);
+                                }
+                            }
+                        }
                         FilePurpose::ImportObj => create::import_obj(ctx, state, &path),
                         FilePurpose::LoadPlugin => ctx.load_plugin(&path),
                     }
                 }
             }
         }
+        unsaved_changes::show(ui, ctx, state);
+        recovery::show_offer(ui, ctx, state);
     }
 
     fn on_detach(&mut self, ctx: &mut Ctx) {
+        let state = &mut self.state;
+        state
+            .recovery
+            .on_detach(ctx, &state.history, state.quitting);
         if let Err(e) = panel::save_layout(&self.state.layout_path, &self.dock) {
             ctx.warn(format!(
                 "cannot save the editor layout to {}: {e}",
@@ -133,6 +185,8 @@ impl Plugin for Editor {
             selection: self.state.selection.iter().map(|e| e.to_bits()).collect(),
             recent: self.state.recent.clone(),
             camera: self.state.viewport.camera.clone(),
+            modified: self.state.history.is_modified(),
+            recovery_offers: self.state.recovery.offers.clone(),
         })
     }
 
@@ -148,6 +202,10 @@ impl Plugin for Editor {
             .collect();
         self.state.recent = kept.recent;
         self.state.viewport.camera = kept.camera;
+        if kept.modified {
+            self.state.history.mark_modified();
+        }
+        self.state.recovery.offers = kept.recovery_offers;
         Ok(())
     }
 }

@@ -8,6 +8,7 @@ use crate::create::Primitive;
 use crate::file_dialog::{FileDialog, FilePurpose};
 use crate::panel::{self, Panel};
 use crate::state::EditorState;
+use crate::unsaved_changes::{self, Discarding};
 
 /// Draws the menu bar and the play toolbar.
 pub fn menu_bar(
@@ -55,7 +56,7 @@ fn title(ui: &mut egui::Ui, ctx: &mut Ctx, state: &EditorState) {
 
 fn file_menu(ui: &mut egui::Ui, ctx: &mut Ctx, state: &mut EditorState) {
     if ui.button("New").clicked() {
-        new_scene(ctx, state);
+        unsaved_changes::run_or_ask(ctx, state, Discarding::New);
     }
     if ui.button("Open…").clicked() {
         state.file_dialog = Some(FileDialog::new(FilePurpose::Open, &scene_dir(ctx)));
@@ -81,18 +82,18 @@ fn file_menu(ui: &mut egui::Ui, ctx: &mut Ctx, state: &mut EditorState) {
         }
         for path in state.recent.clone() {
             if ui.button(&path).clicked() {
-                open_scene(ctx, state, &path);
+                unsaved_changes::run_or_ask(ctx, state, Discarding::Open(path));
             }
         }
     });
     ui.separator();
     if ui.button("Quit").clicked() {
-        ctx.request_quit();
+        unsaved_changes::run_or_ask(ctx, state, Discarding::Quit);
     }
 }
 
 /// The folder of the current scene file, else `assets/scenes` when it exists, else `.`.
-fn scene_dir(ctx: &mut Ctx) -> std::path::PathBuf {
+pub fn scene_dir(ctx: &mut Ctx) -> std::path::PathBuf {
     let from_scene = ctx.scene_path().and_then(|p| {
         std::path::Path::new(&p)
             .parent()
@@ -109,10 +110,12 @@ fn scene_dir(ctx: &mut Ctx) -> std::path::PathBuf {
     })
 }
 
-/// Replaces the world with an empty one.
+/// Replaces the world with an empty one, without asking (see
+/// [`unsaved_changes::run_or_ask`]).
 pub fn new_scene(ctx: &mut Ctx, state: &mut EditorState) {
     match ctx.new_scene() {
         Ok(()) => {
+            state.recovery.forget(ctx);
             state.selection.clear();
             state.history.clear();
             state.viewport.forget_camera();
@@ -121,10 +124,11 @@ pub fn new_scene(ctx: &mut Ctx, state: &mut EditorState) {
     }
 }
 
-/// Opens a scene file.
+/// Opens a scene file, without asking (see [`unsaved_changes::run_or_ask`]).
 pub fn open_scene(ctx: &mut Ctx, state: &mut EditorState, path: &str) {
     match ctx.open_scene(path) {
         Ok(()) => {
+            state.recovery.forget(ctx);
             state.selection.clear();
             state.history.clear();
             state.viewport.forget_camera();
@@ -149,6 +153,7 @@ pub fn save_scene(ctx: &mut Ctx, state: &mut EditorState, path: &str) {
     match ctx.save_scene(path) {
         Ok(()) => {
             state.history.mark_saved();
+            state.recovery.forget(ctx);
             state.remember_scene(path);
             state.status.clear();
         }

@@ -1,6 +1,6 @@
 //! [`Panel`]: the editor's dockable panels, their default arrangement, and the layout file.
 
-use std::path::{Path, PathBuf};
+use std::path::Path;
 
 use egui_dock::{DockState, NodeIndex};
 use serde::{Deserialize, Serialize};
@@ -103,8 +103,5 @@ pub fn save_layout(path: &Path, dock: &DockState<Panel>) -> std::io::Result<()> 
     if let Some(dir) = path.parent().filter(|d| !d.as_os_str().is_empty()) {
         std::fs::create_dir_all(dir)?;
     }
-    let mut temp = PathBuf::from(path);
-    temp.set_extension(format!("tmp{}", std::process::id()));
-    std::fs::write(&temp, text)?;
-    std::fs::rename(&temp, path)
+    crate::atomic_file::write(path, text.as_bytes())
 }

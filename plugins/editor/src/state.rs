@@ -11,6 +11,8 @@ use crate::file_dialog::FileDialog;
 use crate::hierarchy::HierarchyState;
 use crate::history::{snapshot, Command, History};
 use crate::inspector::InspectorState;
+use crate::recovery::Recovery;
+use crate::unsaved_changes::Discarding;
 use crate::viewport::ViewportState;
 
 /// Most recent scenes kept in File ▸ Recent.
@@ -45,6 +47,15 @@ pub struct EditorState {
     pub recent: Vec<String>,
     /// The last error, shown in the status line.
     pub status: String,
+    /// An action waiting for the answer to "Save changes?".
+    pub asking: Option<Discarding>,
+    /// An action to run once Save As has saved the untitled scene.
+    pub after_save: Option<Discarding>,
+    /// The editor asked the host to quit after the scene was saved or its edits thrown
+    /// away on purpose (no recovery copy is kept).
+    pub quitting: bool,
+    /// Autosave and the recovery copy.
+    pub recovery: Recovery,
 }
 
 impl EditorState {

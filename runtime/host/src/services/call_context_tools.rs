@@ -1,7 +1,7 @@
 //! The tool services (`ToolServices`) of [`CallContext`]: world introspection, scenes,
 //! plugins, diagnostics, console, play mode, scripts, viewport.
 
-use std::path::Path;
+use std::path::{Path, PathBuf};
 
 use onyx_plugin_api::glam::Vec2;
 use onyx_plugin_api::glam::Vec3;
@@ -109,12 +109,20 @@ impl ToolServices for CallContext<'_> {
     }
 
     fn save_scene(&mut self, path: &str) -> Result<(), CtxError> {
-        let path = Path::new(path);
+        self.save_scene_copy(path)?;
+        tracing::info!(path, "saved scene");
+        self.state.tools.scene_path = Some(PathBuf::from(path));
+        Ok(())
+    }
+
+    fn save_scene_copy(&mut self, path: &str) -> Result<(), CtxError> {
         let mut file = scene::scene_from_world(&self.state.world);
         file.physics = self.state.physics.scene_physics().cloned();
-        scene::write_scene(&file, path).map_err(scene_error)?;
-        tracing::info!(path = %path.display(), "saved scene");
-        self.state.tools.scene_path = Some(path.to_path_buf());
+        scene::write_scene(&file, Path::new(path)).map_err(scene_error)
+    }
+
+    fn set_scene_path(&mut self, path: Option<&str>) -> Result<(), CtxError> {
+        self.state.tools.scene_path = path.map(PathBuf::from);
         Ok(())
     }
 

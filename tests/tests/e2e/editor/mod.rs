@@ -15,13 +15,21 @@ fn editor_host(dir: &Path) -> HeadlessHost {
     editor_host_with(dir, HostConfig::default())
 }
 
-/// [`editor_host`] with more settings in `config`.
+/// [`editor_host`] with more settings in `config`. The layout and the recovery copies
+/// live in `dir` (the defaults, under `.onyx/` in the working directory, would be shared by
+/// every test).
 fn editor_host_with(dir: &Path, config: HostConfig) -> HeadlessHost {
-    let config = config.setting(
-        "editor",
-        "layout",
-        dir.join("layout.json").display().to_string(),
-    );
+    let config = config
+        .setting(
+            "editor",
+            "layout",
+            dir.join("layout.json").display().to_string(),
+        )
+        .setting(
+            "editor",
+            "recovery",
+            dir.join("recovery").display().to_string(),
+        );
     let mut host = HeadlessHost::with_config(config);
     host.load_plugin_file(&plugin_library("editor"))
         .expect("the editor loads");
@@ -743,5 +751,6 @@ fn the_viewport_camera_flies_zooms_and_frames_the_selection() {
 }
 
 mod files;
+mod nothing_lost;
 mod scene_graph;
 mod viewport;
