@@ -1,8 +1,11 @@
 //! [`PluginInstance`]: one live plugin object, called through the ABI.
 
+use std::sync::Arc;
+
 use abi_stable::sabi_trait::TD_Opaque;
 use abi_stable::std_types::{RSlice, RStr, Tuple2};
 
+use super::plugin_library::LibraryImage;
 use crate::__ffi::{
     new_plugin_box, AttachInfoFfi, EventFfi, GuiInputFfi, HostBridge, HostObject_TO, PluginBox,
 };
@@ -16,6 +19,9 @@ use crate::{AttachInfo, Event, Flow, Plugin};
 /// plugin's panic or error as a [`CallError`].
 pub struct PluginInstance {
     object: PluginBox,
+    /// The image the object's code lives in (`None` in-process); declared after `object`, so
+    /// it is released after the object is dropped.
+    _image: Option<Arc<LibraryImage>>,
 }
 
 impl std::fmt::Debug for PluginInstance {
@@ -35,8 +41,11 @@ macro_rules! with_host {
 }
 
 impl PluginInstance {
-    pub(crate) fn from_object(object: PluginBox) -> Self {
-        Self { object }
+    pub(crate) fn from_library(object: PluginBox, image: Arc<LibraryImage>) -> Self {
+        Self {
+            object,
+            _image: Some(image),
+        }
     }
 
     /// Wraps an in-process plugin value under `name`.
@@ -44,7 +53,10 @@ impl PluginInstance {
         let object = new_plugin_box(name, || plugin)
             .into_result()
             .map_err(CallError::from)?;
-        Ok(Self { object })
+        Ok(Self {
+            object,
+            _image: None,
+        })
     }
 
     /// The plugin's name.

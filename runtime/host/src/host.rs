@@ -2,7 +2,7 @@
 
 use std::path::Path;
 
-use onyx_plugin_api::host::PluginInstance;
+use onyx_plugin_api::host::{PluginInstance, PluginLibrary};
 use onyx_plugin_api::{AttachInfo, Event, Flow, PlatformEvent, Plugin, Time, WindowEvent};
 
 use crate::clock::FixedClock;
@@ -41,6 +41,14 @@ pub struct Host {
     pub(crate) initialized: bool,
     shut_down: bool,
     pub(crate) watcher: Option<crate::plugins::LibraryWatcher>,
+    /// Times automatic reloads (`onyx dev` holds them while a build round runs).
+    pub(crate) reload_gate: crate::plugins::ReloadGate,
+    /// Rebuilt libraries noticed while the gate was held.
+    pub(crate) pending_reloads: Vec<std::path::PathBuf>,
+    /// The last successful swap, stage by stage.
+    pub(crate) last_reload: Option<crate::plugins::ReloadReport>,
+    /// Keep old builds' images mapped ([`HostConfig::keep_old_builds`]).
+    pub(crate) keep_old_builds: bool,
     pub(crate) gui: crate::gui::GuiSystem,
     /// What made the run unclean besides a faulted plugin still loaded (a plugin that
     /// panicked while being dropped, or whose state could not be carried over).
@@ -63,6 +71,10 @@ impl Host {
             initialized: false,
             shut_down: false,
             watcher: None,
+            reload_gate: crate::plugins::ReloadGate::default(),
+            pending_reloads: Vec::new(),
+            last_reload: None,
+            keep_old_builds: config.keep_old_builds,
             gui: crate::gui::GuiSystem::default(),
             incidents: Vec::new(),
         }
@@ -87,7 +99,8 @@ impl Host {
 
     /// Loads the plugin library at `path` (through a fresh copy). Returns its name.
     pub fn load_plugin_file(&mut self, path: &Path) -> Result<String, PluginLoadError> {
-        let (library, loaded_from) = open_library(path).map_err(|e| self.report(e))?;
+        let opened = open_library(path).map_err(|e| self.report(e))?;
+        let library = opened.library;
         let name = library.name().to_owned();
         if self.plugin(&name).is_some() {
             return Err(self.report(PluginLoadError::AlreadyLoaded { plugin: name }));
@@ -105,17 +118,16 @@ impl Host {
         tracing::info!(plugin = %name, version = library.version(), path = %path.display(), "loaded plugin library");
         let origin = PluginOrigin::Library {
             path: path.to_path_buf(),
-            loaded_from,
+            loaded_from: opened.loaded_from,
         };
-        // The content hash only matters to the hot-reload watcher; without one, skip reading
-        // the whole library again (it is hashed when watching starts).
-        let hash = self
-            .watcher
-            .is_some()
-            .then(|| crate::plugins::library_watcher::content_hash(path).ok())
-            .flatten();
-        self.attach(name.clone(), origin, instance, hash)?;
-        self.watch_new_plugin(path, hash);
+        self.attach(
+            name.clone(),
+            origin,
+            instance,
+            Some(library),
+            Some(opened.content_hash),
+        )?;
+        self.watch_new_plugin(path);
         Ok(name)
     }
 
@@ -137,7 +149,13 @@ impl Host {
                 message: e.to_string(),
             })
         })?;
-        self.attach(name.to_owned(), PluginOrigin::InProcess, instance, None)
+        self.attach(
+            name.to_owned(),
+            PluginOrigin::InProcess,
+            instance,
+            None,
+            None,
+        )
     }
 
     fn attach(
@@ -145,6 +163,7 @@ impl Host {
         name: String,
         origin: PluginOrigin,
         instance: PluginInstance,
+        library: Option<PluginLibrary>,
         content_hash: Option<u64>,
     ) -> Result<(), PluginLoadError> {
         let settings: Vec<(String, String)> = self
@@ -158,6 +177,7 @@ impl Host {
             tag: crate::watchdog::CallTag::plugin(&name),
             origin,
             instance,
+            library,
             status: PluginStatus::Running,
             settings,
             content_hash,
@@ -212,15 +232,24 @@ impl Host {
         };
         let mut slot = self.plugins.remove(index);
         slot.call(&mut self.state, Stage::Detach, |p, cx| p.on_detach(cx));
-        if let Some(incident) = slot.dispose(&mut self.state) {
-            self.incidents.push(incident);
-        }
+        let incident = slot.dispose(&mut self.state);
+        // A `Drop` that panicked may have left anything behind: its image stays.
+        let dropped_cleanly = incident.is_none();
+        self.incidents.extend(incident);
         self.gui.forget(name);
         self.state.tools.scripts.remove_plugin(name);
         if let (Some(watcher), PluginOrigin::Library { path, .. }) =
             (&mut self.watcher, &slot.origin)
         {
             watcher.unwatch(path);
+        }
+        let origin = slot.origin.clone();
+        if let (Some(library), PluginOrigin::Library { loaded_from, .. }, true) =
+            (slot.library.take(), &origin, dropped_cleanly)
+        {
+            drop(slot); // the dropped object lets go of its image
+            let fate = crate::plugins::unload_image(library, loaded_from, self.keep_old_builds);
+            tracing::debug!(plugin = name, "the unloaded plugin's image: {fate}");
         }
         self.state
             .io

@@ -22,6 +22,12 @@ pub struct HostConfig {
     /// aborts. Too low refuses a plugin's legitimate bursts; too high lets a flood grow the
     /// queue (each event is kept until the next frame).
     pub max_events_per_frame: u32,
+    /// Keep every old build's library mapped after a hot reload or an unload (default
+    /// `false`: an old image is unmapped once nothing from it can run, see
+    /// `plugins/image_unload.rs`). Set it for plugins that hand callbacks to a C library or
+    /// start threads outside Rust's std and cannot take them back in `on_detach`; memory
+    /// then grows by one library image per swap.
+    pub keep_old_builds: bool,
 }
 
 impl Default for HostConfig {
@@ -32,6 +38,7 @@ impl Default for HostConfig {
             search_path: PluginSearchPath::from_env(),
             asset_root: std::path::PathBuf::new(),
             max_events_per_frame: DEFAULT_MAX_EVENTS_PER_FRAME,
+            keep_old_builds: false,
         }
     }
 }

@@ -1,14 +1,15 @@
 //! Hot reload: replacing a running plugin with a new build of its library, keeping its state
 //! and every entity.
 
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
+use std::time::{Duration, Instant};
 
-use onyx_plugin_api::host::{CallError, PluginRequest};
+use onyx_plugin_api::host::{CallError, PluginLibrary, PluginRequest};
 use onyx_plugin_api::{AttachInfo, Event, PlatformEvent};
 
-use crate::plugins::library_watcher::content_hash;
 use crate::plugins::{
-    open_library, LibraryWatcher, PluginOrigin, PluginStatus, ReloadError, Stage,
+    content_hash, open_library_bytes, read_library, unload_image, ImageFate, LibraryWatcher,
+    PluginLoadError, PluginOrigin, PluginStatus, ReloadError, ReloadGate, ReloadReport, Stage,
 };
 use crate::services::CallContext;
 use crate::watchdog::plugin_call::PluginCall;
@@ -38,6 +39,28 @@ fn discard(new: &mut onyx_plugin_api::host::PluginInstance, name: &str) -> Optio
     Some(incident)
 }
 
+/// A new build read from disk, ready to replace a running plugin.
+struct NewBuild {
+    path: PathBuf,
+    bytes: Vec<u8>,
+    hash: u64,
+    read: Duration,
+}
+
+impl NewBuild {
+    fn read(path: &Path) -> Result<Self, PluginLoadError> {
+        let started = Instant::now();
+        let bytes = read_library(path)?;
+        let hash = content_hash(&bytes);
+        Ok(Self {
+            path: path.to_path_buf(),
+            bytes,
+            hash,
+            read: started.elapsed(),
+        })
+    }
+}
+
 impl Host {
     /// Starts (or stops) watching every plugin loaded from a file: when a library is rebuilt,
     /// the plugin is reloaded at the start of the next frame.
@@ -47,16 +70,10 @@ impl Host {
             return Ok(());
         }
         let mut watcher = LibraryWatcher::new()?;
-        for slot in &mut self.plugins {
-            let PluginOrigin::Library { path, .. } = &slot.origin else {
-                continue;
-            };
-            let hash = match slot.content_hash {
-                Some(hash) => hash,
-                None => content_hash(path).map_err(notify::Error::io)?,
-            };
-            slot.content_hash = Some(hash);
-            watcher.watch(path, hash)?;
+        for slot in &self.plugins {
+            if let PluginOrigin::Library { path, .. } = &slot.origin {
+                watcher.watch(path)?;
+            }
         }
         self.watcher = Some(watcher);
         Ok(())
@@ -67,68 +84,168 @@ impl Host {
         self.watcher.is_some()
     }
 
-    pub(crate) fn watch_new_plugin(&mut self, path: &std::path::Path, hash: Option<u64>) {
-        if let (Some(watcher), Some(hash)) = (&mut self.watcher, hash) {
-            if let Err(error) = watcher.watch(path, hash) {
+    /// The handle that holds automatic reloads while builds run and releases a round of
+    /// rebuilt libraries to be swapped in one frame (see [`ReloadGate`]).
+    pub fn reload_gate(&self) -> ReloadGate {
+        self.reload_gate.clone()
+    }
+
+    /// The last successful swap, stage by stage.
+    pub fn last_reload(&self) -> Option<&ReloadReport> {
+        self.last_reload.as_ref()
+    }
+
+    pub(crate) fn watch_new_plugin(&mut self, path: &Path) {
+        if let Some(watcher) = &mut self.watcher {
+            if let Err(error) = watcher.watch(path) {
                 tracing::warn!(path = %path.display(), "cannot watch plugin file: {error}");
             }
         }
     }
 
-    /// Reloads every library whose file was rebuilt (called at the start of each frame).
+    /// Swaps every plugin whose library was rebuilt (called at the start of each frame):
+    /// all the libraries that are ready swap in this one frame, unless the reload gate holds
+    /// them for a build round still running.
     pub(crate) fn poll_hot_reload(&mut self) {
         let Some(watcher) = &mut self.watcher else {
             return;
         };
-        let changed = watcher.poll();
-        for (path, hash) in changed {
-            let names: Vec<String> = self
-                .plugins
-                .iter()
-                .filter(|slot| matches!(&slot.origin, PluginOrigin::Library { path: p, .. } if std::path::absolute(p).ok().as_ref() == Some(&path)))
-                .map(|slot| slot.name.clone())
-                .collect();
-            for name in names {
-                tracing::info!(plugin = %name, path = %path.display(), "plugin file rebuilt; reloading");
-                let _ = self.reload_with_hash(&name, Some(hash));
+        let ready = watcher.poll();
+        let (held, released) = self.reload_gate.take();
+        for path in &released {
+            watcher.settle(path);
+        }
+        for path in ready.into_iter().chain(released.iter().cloned()) {
+            if !self.pending_reloads.contains(&path) {
+                self.pending_reloads.push(path);
             }
         }
+        if held && released.is_empty() {
+            return;
+        }
+        let paths = std::mem::take(&mut self.pending_reloads);
+        let mut batch = Vec::new();
+        for path in paths {
+            for name in self.plugins_from(&path) {
+                match NewBuild::read(&path) {
+                    Ok(build) if Some(build.hash) == self.loaded_hash(&name) => {
+                        tracing::debug!(plugin = %name, "library rewritten with the same content; not reloaded");
+                    }
+                    Ok(build) => {
+                        tracing::info!(plugin = %name, path = %path.display(), "plugin library rebuilt; reloading");
+                        batch.push((name, Some(build)));
+                    }
+                    // Read again by the reload, which reports why it failed.
+                    Err(_) => batch.push((name, None)),
+                }
+            }
+        }
+        let _ = self.swap_all(batch);
     }
 
-    /// Reloads every plugin that was loaded from a file. Returns the errors, if any.
+    /// The plugins loaded from `path`.
+    fn plugins_from(&self, path: &Path) -> Vec<String> {
+        let wanted = std::path::absolute(path).ok();
+        self.plugins
+            .iter()
+            .filter(|slot| matches!(&slot.origin, PluginOrigin::Library { path: p, .. } if std::path::absolute(p).ok() == wanted))
+            .map(|slot| slot.name.clone())
+            .collect()
+    }
+
+    fn loaded_hash(&self, name: &str) -> Option<u64> {
+        self.plugin(name).and_then(|slot| slot.content_hash)
+    }
+
+    /// Swaps every plugin whose library file changed since it was loaded (and every faulted
+    /// one, to revive it), all in this one call — between two frames. A plugin whose file is
+    /// unchanged is left alone. Returns the errors, if any; each refused plugin keeps its
+    /// running build, the others swap.
     pub fn reload_all(&mut self) -> Vec<ReloadError> {
-        let names: Vec<String> = self
+        let mut batch = Vec::new();
+        let mut errors = Vec::new();
+        let library_plugins: Vec<(String, PathBuf, bool)> = self
             .plugins
             .iter()
-            .filter(|s| matches!(s.origin, PluginOrigin::Library { .. }))
-            .map(|s| s.name.clone())
+            .filter_map(|slot| match &slot.origin {
+                PluginOrigin::Library { path, .. } => {
+                    Some((slot.name.clone(), path.clone(), slot.status.is_faulted()))
+                }
+                PluginOrigin::InProcess => None,
+            })
             .collect();
-        names
-            .iter()
-            .filter_map(|name| self.reload_plugin(name).err())
-            .collect()
+        for (name, path, faulted) in library_plugins {
+            match NewBuild::read(&path) {
+                Ok(build) if !faulted && Some(build.hash) == self.loaded_hash(&name) => {}
+                Ok(build) => batch.push((name, Some(build))),
+                Err(cause) => {
+                    let error = ReloadError::Load {
+                        plugin: name.clone(),
+                        cause: Box::new(cause),
+                    };
+                    self.report_reload(&name, Err(&error));
+                    errors.push(error);
+                }
+            }
+        }
+        errors.extend(self.swap_all(batch));
+        errors
+    }
+
+    /// Swaps each plugin of `batch` for its new build (read again when `None`), one after
+    /// the other with no plugin call in between.
+    fn swap_all(&mut self, batch: Vec<(String, Option<NewBuild>)>) -> Vec<ReloadError> {
+        let count = batch.len();
+        let mut errors = Vec::new();
+        for (name, build) in batch {
+            if let Err(error) = self.reload_from(&name, build) {
+                errors.push(error);
+            }
+        }
+        if count > 1 {
+            tracing::info!(
+                "{} of {count} rebuilt plugins swapped in one frame",
+                count - errors.len()
+            );
+        }
+        errors
     }
 
     /// Replaces plugin `name` with the build now in its library file.
     ///
-    /// The new build is loaded from a fresh copy first; then old `save_state` → new
-    /// `load_state` → old `on_detach` → new `on_attach` (with `reload: true`) → the old plugin
-    /// object is dropped. The world is untouched. If anything before the swap fails, the old
-    /// build keeps running; if the new `on_attach` fails, the old build is attached again.
-    /// A faulted plugin is revived by a successful reload: its state is not carried over (it
-    /// is not trusted), so the new build starts empty, gets `on_init` again (once the host
-    /// has initialised its plugins) and the host logs that it did. The old image stays
-    /// mapped (it is never unloaded; see [`open_library`]).
+    /// The new build is read once and loaded from a fresh copy first; then old `save_state`
+    /// → new `load_state` → old `on_detach` → new `on_attach` (with `reload: true`) → the
+    /// old plugin object is dropped inside its image, and the image is handed back to the
+    /// system loader once nothing from it can run (see `plugins/image_unload.rs`). The world
+    /// is untouched. If anything before the swap fails — the new build cannot be loaded, or
+    /// cannot read the running build's state — the old build keeps running untouched; if the
+    /// new `on_attach` fails, the old build is attached again. A faulted plugin is revived
+    /// by a successful reload: its state is not carried over (it is not trusted), so the new
+    /// build starts empty, gets `on_init` again (once the host has initialised its plugins)
+    /// and the host logs that it did.
     pub fn reload_plugin(&mut self, name: &str) -> Result<(), ReloadError> {
-        self.reload_with_hash(name, None)
+        self.reload_from(name, None)
     }
 
-    /// [`Host::reload_plugin`], when the file's content hash is already known.
-    fn reload_with_hash(&mut self, name: &str, hash: Option<u64>) -> Result<(), ReloadError> {
-        let result = self.try_reload(name, hash);
-        match &result {
+    /// [`Host::reload_plugin`] with the new build's bytes, if already read; reports the
+    /// outcome (log and platform event).
+    fn reload_from(&mut self, name: &str, build: Option<NewBuild>) -> Result<(), ReloadError> {
+        let result = self.try_reload(name, build);
+        self.report_reload(name, result.as_ref().map(|_| ()));
+        result
+    }
+
+    fn report_reload(&mut self, name: &str, result: Result<(), &ReloadError>) {
+        match result {
             Ok(()) => {
-                tracing::info!(plugin = name, "plugin reloaded");
+                if let Some(report) = &self.last_reload {
+                    tracing::info!(
+                        plugin = name,
+                        total = ?report.total,
+                        old_image = %report.old_image,
+                        "plugin reloaded"
+                    );
+                }
                 self.state
                     .io
                     .events
@@ -147,10 +264,17 @@ impl Host {
                     }));
             }
         }
-        result
     }
 
-    fn try_reload(&mut self, name: &str, known_hash: Option<u64>) -> Result<(), ReloadError> {
+    /// Closes a build that will not run (or no longer runs): its object is already dropped.
+    fn unload(&self, name: &str, library: PluginLibrary, loaded_from: &Path) -> ImageFate {
+        let fate = unload_image(library, loaded_from, self.keep_old_builds);
+        tracing::debug!(plugin = name, "old image {fate}");
+        fate
+    }
+
+    fn try_reload(&mut self, name: &str, build: Option<NewBuild>) -> Result<(), ReloadError> {
+        let started = Instant::now();
         let index = self
             .plugins
             .iter()
@@ -163,10 +287,16 @@ impl Host {
                 plugin: name.to_owned(),
             });
         };
-        let path: PathBuf = path.clone();
-        let hash = known_hash.or_else(|| content_hash(&path).ok());
-        if let (Some(watcher), Some(hash)) = (&mut self.watcher, hash) {
-            watcher.set_hash(&path, hash);
+        let load_error = |cause| ReloadError::Load {
+            plugin: name.to_owned(),
+            cause: Box::new(cause),
+        };
+        let build = match build {
+            Some(build) => build,
+            None => NewBuild::read(path).map_err(load_error)?,
+        };
+        if let Some(watcher) = &mut self.watcher {
+            watcher.settle(&build.path);
         }
         let step = |stage, which, error: &CallError| ReloadError::Step {
             plugin: name.to_owned(),
@@ -176,26 +306,38 @@ impl Host {
         };
 
         // 1. Load and build the new version; nothing has changed yet.
-        let (library, loaded_from) = open_library(&path).map_err(|cause| ReloadError::Load {
-            plugin: name.to_owned(),
-            cause: Box::new(cause),
-        })?;
+        let opened = open_library_bytes(&build.path, &build.bytes, build.hash, build.read)
+            .map_err(load_error)?;
+        drop(build.bytes);
+        let library = opened.library;
         if library.name() != name {
+            let found = library.name().to_owned();
+            self.unload(name, library, &opened.loaded_from);
             return Err(ReloadError::NameChanged {
                 plugin: name.to_owned(),
-                found: library.name().to_owned(),
-                path,
+                found,
+                path: build.path,
             });
         }
+        let construct_started = Instant::now();
         let constructed = {
             let _call = PluginCall::enter(CallTag::plugin(name), Stage::Construct);
             library.instantiate()
         };
-        let mut new = constructed.map_err(|e| step("constructor", "new", &e))?;
+        let mut new = match constructed {
+            Ok(new) => new,
+            Err(error) => {
+                self.unload(name, library, &opened.loaded_from);
+                return Err(step("constructor", "new", &error));
+            }
+        };
+        let construct = construct_started.elapsed();
 
         // 2. Carry the state over (a faulted plugin's state is not trusted: start fresh). A
         //    panic on either side faults the plugin: the old build stays in place, not called
         //    again, and the run is no longer clean; an error returned just refuses the swap.
+        let state_started = Instant::now();
+        let mut state_bytes = 0;
         let slot = &mut self.plugins[index];
         let was_running = !slot.status.is_faulted();
         if was_running {
@@ -205,6 +347,7 @@ impl Host {
             }
             .map_err(|e| (Stage::SaveState, "old", e));
             let carried = carried.and_then(|state| {
+                state_bytes = state.len();
                 if state.is_empty() {
                     Ok(())
                 } else {
@@ -214,10 +357,26 @@ impl Host {
                 }
             });
             if let Err((stage, which, error)) = carried {
-                if let Some(incident) = discard(&mut new, name) {
-                    self.incidents.push(incident);
+                let clean = match discard(&mut new, name) {
+                    Some(incident) => {
+                        self.incidents.push(incident);
+                        false
+                    }
+                    None => true,
+                };
+                drop(new);
+                if clean {
+                    self.unload(name, library, &opened.loaded_from);
                 }
-                let failed = step(stage.as_str(), which, &error);
+                let failed = match (&error, stage) {
+                    (CallError::Returned { message }, Stage::LoadState) => {
+                        ReloadError::StateRefused {
+                            plugin: name.to_owned(),
+                            message: message.clone(),
+                        }
+                    }
+                    _ => step(stage.as_str(), which, &error),
+                };
                 if matches!(error, CallError::Panicked { .. }) {
                     // The faulted status reports it (and makes the run unclean).
                     self.plugins[index].fault(&mut self.state, stage, &error);
@@ -225,8 +384,11 @@ impl Host {
                 return Err(failed);
             }
         }
+        let state = state_started.elapsed();
 
         // 3. Swap: detach the old build, attach the new one.
+        let attach_started = Instant::now();
+        let slot = &mut self.plugins[index];
         let info = AttachInfo {
             reload: true,
             settings: slot.settings.clone(),
@@ -241,9 +403,8 @@ impl Host {
             new.on_attach(&mut cx, &info)
         };
         if let Err(error) = attached {
-            if let Some(incident) = discard(&mut new, name) {
-                self.incidents.push(incident);
-            }
+            let incident = discard(&mut new, name);
+            drop(new);
             if was_running {
                 // Put the old build back, told it is being re-attached.
                 let revived = {
@@ -257,33 +418,35 @@ impl Host {
                     slot.status = PluginStatus::Running;
                 }
             }
+            // The new build's `on_attach` may have started anything before it failed: its
+            // image stays mapped.
+            drop(library);
+            if let Some(incident) = incident {
+                self.incidents.push(incident);
+            }
             return Err(step("on_attach", "new", &error));
         }
-        // The old plugin object is dropped here, inside its own image (which stays mapped).
+        let attach = attach_started.elapsed();
+
+        // 4. The old plugin object is dropped inside its own image, then the image goes.
+        let drop_started = Instant::now();
         let mut old = std::mem::replace(&mut slot.instance, new);
+        let old_library = slot.library.replace(library);
+        let old_origin = std::mem::replace(
+            &mut slot.origin,
+            PluginOrigin::Library {
+                path: build.path,
+                loaded_from: opened.loaded_from,
+            },
+        );
         slot.status = PluginStatus::Running;
+        slot.content_hash = Some(opened.content_hash);
+        slot.reloads += 1;
         let disposed = {
             let _call = PluginCall::enter(slot.tag, Stage::Drop);
             old.dispose()
         };
-        if let Err(error) = disposed {
-            let incident = format!(
-                "the previous build of plugin `{name}` failed while being dropped after a \
-                 reload ({}); the new build runs",
-                message(&error)
-            );
-            tracing::error!(plugin = name, "{incident}");
-            self.state
-                .io
-                .events
-                .push(Event::Platform(PlatformEvent::Error {
-                    message: incident.clone(),
-                }));
-            self.incidents.push(incident);
-        }
-        slot.origin = PluginOrigin::Library { path, loaded_from };
-        slot.content_hash = hash;
-        slot.reloads += 1;
+        drop(old);
         if !was_running {
             // Nothing came over from the faulted build: without `on_init` the new one would
             // sit idle, never having set itself up.
@@ -298,6 +461,44 @@ impl Host {
         }
         // The new image builds a fresh egui context: its textures start over.
         self.gui.forget(name);
+        let dropped = drop_started.elapsed();
+        let unload_started = Instant::now();
+        let old_image = match disposed {
+            Ok(()) => match (old_library, &old_origin) {
+                (Some(library), PluginOrigin::Library { loaded_from, .. }) => {
+                    self.unload(name, library, loaded_from)
+                }
+                _ => ImageFate::Kept("it was not loaded from a file".into()),
+            },
+            Err(error) => {
+                let incident = format!(
+                    "the previous build of plugin `{name}` failed while being dropped after a \
+                     reload ({}); the new build runs",
+                    message(&error)
+                );
+                tracing::error!(plugin = name, "{incident}");
+                self.state
+                    .io
+                    .events
+                    .push(Event::Platform(PlatformEvent::Error {
+                        message: incident.clone(),
+                    }));
+                self.incidents.push(incident);
+                ImageFate::Kept("its plugin object panicked while being dropped".into())
+            }
+        };
+        self.last_reload = Some(ReloadReport {
+            plugin: name.to_owned(),
+            load: opened.timings,
+            construct,
+            state,
+            state_bytes,
+            attach,
+            drop: dropped,
+            unload: unload_started.elapsed(),
+            total: started.elapsed(),
+            old_image,
+        });
         Ok(())
     }
 

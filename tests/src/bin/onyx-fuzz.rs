@@ -20,6 +20,17 @@ use std::time::{Duration, Instant};
 
 use onyx_tests::fuzz::{Case, Format, Outcome, Recipe};
 
+const USAGE: &str = "\
+usage: onyx-fuzz [--formats scene,obj,mtl,png,jpeg,gltf,glb,library] [--cases N]
+                 [--seed S] [--timeout SECS] [--deep] [--record FILE]
+
+Mutates every format Onyx reads and feeds each case to its reader in a child process.
+  --formats  which formats (default: all)        --cases    cases per format (100000)
+  --seed     the run's seed (1)                   --timeout  seconds before a hang (20)
+  --deep     also dlopen libraries that pass the host's check
+  --record   append the recipe of each failing case to FILE
+Exit status: 0 when no case panicked, died of a signal or hung; 1 otherwise; 2 bad usage.";
+
 struct Options {
     formats: Vec<Format>,
     cases: u64,
@@ -79,7 +90,11 @@ fn parse(args: &[String]) -> Result<Options, String> {
             }
             "--deep" => options.deep = true,
             "--record" => options.record = Some(value()?.into()),
-            other => return Err(format!("unknown argument `{other}` (see the file's docs)")),
+            "--help" | "-h" => {
+                println!("{USAGE}");
+                std::process::exit(0);
+            }
+            other => return Err(format!("unknown argument `{other}`\n{USAGE}")),
         }
     }
     Ok(options)

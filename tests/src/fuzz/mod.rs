@@ -35,8 +35,12 @@ pub struct Recipe {
 impl Recipe {
     /// Parses a line; `None` for blank lines and `#` comments.
     pub fn parse(line: &str) -> Option<Result<Recipe, String>> {
-        let line = line.trim();
-        if line.is_empty() || line.starts_with('#') {
+        // What follows `#` is a comment (the recorder writes why the case failed there).
+        let line = line
+            .split_once('#')
+            .map_or(line, |(recipe, _)| recipe)
+            .trim();
+        if line.is_empty() {
             return None;
         }
         let words: Vec<&str> = line.split_whitespace().collect();

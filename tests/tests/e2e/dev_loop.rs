@@ -1,6 +1,8 @@
 //! The plugin developer's loop with the real `onyx` binary: `onyx new-plugin` scaffolds a
 //! crate that builds and passes its tests; `onyx dev` runs it, rebuilds it when its source
-//! changes and hot-reloads it with its state, and keeps running through a compile error.
+//! changes and hot-reloads it with its state, and keeps running through a compile error; an
+//! edit in a crate two plugins share rebuilds both and swaps them in one frame, keeping
+//! their state when serde can map it and refusing the swap when it cannot.
 //!
 //! The scaffolded crates build into this build's own target directory, as the README tells
 //! a plugin author to (`CARGO_TARGET_DIR=<checkout>/target`): they reuse every dependency
@@ -207,9 +209,16 @@ struct DevRun {
 
 impl DevRun {
     fn start(crate_dir: &Path) -> Self {
-        let mut child = Command::new(onyx_binary())
-            .args(["dev", "--headless", "--frames", "100000", "--plugin-crate"])
-            .arg(crate_dir)
+        Self::start_all(&[crate_dir])
+    }
+
+    fn start_all(crate_dirs: &[&Path]) -> Self {
+        let mut command = Command::new(onyx_binary());
+        command.args(["dev", "--headless", "--frames", "100000"]);
+        for dir in crate_dirs {
+            command.arg("--plugin-crate").arg(dir);
+        }
+        let mut child = command
             .env("CARGO_TARGET_DIR", scaffold_target_dir())
             .env("RUST_LOG", "info")
             .env("NO_COLOR", "1")
@@ -474,5 +483,149 @@ static CRASH_ON_LOAD: extern \"C\" fn() = {
         "exit {:?}: {}",
         out.status,
         tail(&text(&out.stderr), 60)
+    );
+}
+
+/// The crate `fixture-dev-graph-shared`: the speed and part of the state of two plugins.
+const SHARED_LIB_RS: &str = r#"//! Game code two plugins share: their speed and a part of their state.
+
+/// How fast the plugins move their entities, metres per second.
+pub const SPEED: f32 = 1.0;
+
+/// What the plugins carry in their state.
+#[derive(Debug, Default, serde::Serialize, serde::Deserialize)]
+pub struct Tally {
+    /// Laps run.
+    pub laps: u64,
+}
+"#;
+
+/// A scaffolded plugin whose speed and part of whose state come from `../shared`.
+fn plugin_on_shared(name: &str, parent: &Path) -> PathBuf {
+    let dir = new_plugin(name, parent);
+    edit(
+        &dir.join("Cargo.toml"),
+        "[dependencies]\n",
+        "[dependencies]\nfixture-dev-graph-shared = { path = \"../shared\" }\n",
+    );
+    let lib_rs = dir.join("src/lib.rs");
+    edit(
+        &lib_rs,
+        "pub const SPEED: f32 = 1.0;",
+        "pub const SPEED: f32 = fixture_dev_graph_shared::SPEED;",
+    );
+    edit(
+        &lib_rs,
+        "    pub cube: Option<Entity>,\n",
+        "    pub cube: Option<Entity>,\n    #[serde(default)]\n    pub tally: fixture_dev_graph_shared::Tally,\n",
+    );
+    dir
+}
+
+#[test]
+fn dev_rebuilds_and_swaps_every_plugin_that_depends_on_an_edited_crate() {
+    let parent = tempfile::tempdir().unwrap();
+    let shared = parent.path().join("shared");
+    std::fs::create_dir_all(shared.join("src")).unwrap();
+    std::fs::write(
+        shared.join("Cargo.toml"),
+        "[package]\nname = \"fixture-dev-graph-shared\"\nversion = \"0.1.0\"\nedition = \"2021\"\n\
+         publish = false\n\n[dependencies]\nserde = { version = \"1\", features = [\"derive\"] }\n",
+    )
+    .unwrap();
+    let shared_rs = shared.join("src/lib.rs");
+    std::fs::write(&shared_rs, SHARED_LIB_RS).unwrap();
+    let a = plugin_on_shared("fixture-dev-graph-a", parent.path());
+    let b = plugin_on_shared("fixture-dev-graph-b", parent.path());
+    let _turn = scaffold_target_lock();
+
+    let mut dev = DevRun::start_all(&[&a, &b]);
+    let running_at = |speed: f32, plugin: &'static str| {
+        move |l: &str| l.contains(plugin) && progress(l).is_some_and(|(_, _, s)| s == speed)
+    };
+    let (i, line) = dev.wait_for(
+        "plugin a at speed 1",
+        0,
+        Duration::from_secs(900),
+        running_at(1.0, "fixture_dev_graph_a"),
+    );
+    let (a_steps, _, _) = progress(&line).unwrap();
+    dev.wait_for(
+        "plugin b at speed 1",
+        0,
+        Duration::from_secs(60),
+        running_at(1.0, "fixture_dev_graph_b"),
+    );
+    assert!(
+        dev.lines()
+            .iter()
+            .any(|l| l.contains("fixture-dev-graph-shared")),
+        "the shared crate is not watched:\n{}",
+        dev.stderr_tail()
+    );
+
+    // The shared crate changes the speed and adds a field to the state: both plugins are
+    // rebuilt in one round and swap in one frame, their state kept.
+    let source = std::fs::read_to_string(&shared_rs).unwrap();
+    let edited = source
+        .replace("pub const SPEED: f32 = 1.0;", "pub const SPEED: f32 = 2.0;")
+        .replace(
+            "    pub laps: u64,\n",
+            "    pub laps: u64,\n    /// The best lap.\n    #[serde(default)]\n    pub best: u32,\n",
+        );
+    assert_ne!(source, edited);
+    std::fs::write(&shared_rs, edited).unwrap();
+    let (r, _) = dev.wait_for("one swap of both", i, Duration::from_secs(300), |l| {
+        l.contains("2 of 2 rebuilt plugins swapped in one frame")
+    });
+    assert!(
+        dev.lines()[i..r]
+            .iter()
+            .any(|l| l.contains("rebuilding 2 plugin crates together")),
+        "{}",
+        dev.stderr_tail()
+    );
+    for plugin in ["fixture_dev_graph_a", "fixture_dev_graph_b"] {
+        let (_, line) = dev.wait_for("a reload message", i, Duration::from_secs(10), |l| {
+            l.contains(plugin) && reloaded_after(l).is_some()
+        });
+        let (steps, speed) = reloaded_after(&line).unwrap();
+        assert_eq!(speed, 2.0, "{line}");
+        assert!(steps >= a_steps, "{plugin} lost its state: {line}");
+    }
+    let (j, _) = dev.wait_for(
+        "progress at speed 2",
+        r,
+        Duration::from_secs(10),
+        running_at(2.0, "fixture_dev_graph_b"),
+    );
+
+    // A type serde cannot map: both swaps are refused with one sentence each, and the
+    // running builds go on.
+    edit(&shared_rs, "pub laps: u64,", "pub laps: String,");
+    for plugin in ["fixture_dev_graph_a", "fixture_dev_graph_b"] {
+        let (_, line) = dev.wait_for("the refusal", j, Duration::from_secs(300), |l| {
+            l.contains(&format!("plugin `{plugin}` was not reloaded"))
+        });
+        assert!(
+            line.contains("cannot read the state of the running one")
+                && line.contains("at `tally.laps`: invalid type: integer `0`, expected a string")
+                && line.contains("the previous build keeps running"),
+            "{line}"
+        );
+    }
+    let (k, _) = dev.wait_for("the refusals reported", j, Duration::from_secs(10), |l| {
+        l.contains("0 of 2 rebuilt plugins swapped in one frame")
+    });
+    dev.wait_for(
+        "the old builds running on",
+        k,
+        Duration::from_secs(10),
+        running_at(2.0, "fixture_dev_graph_a"),
+    );
+    assert!(
+        !dev.lines().iter().any(|l| l.contains("faulted")),
+        "{}",
+        dev.stderr_tail()
     );
 }

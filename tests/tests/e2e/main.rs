@@ -19,6 +19,8 @@ mod physics;
 mod physics_scenes;
 mod registry;
 mod reload;
+mod reload_images;
 mod render;
 mod scenes;
+mod schema_changes;
 mod shading;

@@ -20,6 +20,39 @@ struct Progress {
     reloads_seen: u32,
 }
 
+/// A `static` of `fixture_reload`: how often `on_attach` ran in the running image.
+#[derive(Debug, Deserialize)]
+struct ImageStatics {
+    attaches_in_image: u32,
+}
+
+/// What `fixture_reload` counted of `fixture_peer`'s pings.
+#[derive(Debug, Deserialize, PartialEq)]
+struct PingCount {
+    pings: u64,
+    ping_gaps: u64,
+}
+
+/// What `fixture_peer` saw of `fixture_reload`'s answers.
+#[derive(Debug, Deserialize)]
+struct PeerProgress {
+    sent: u64,
+    pongs: u64,
+    last_pong: u64,
+    gaps: u64,
+    versions: Vec<u32>,
+}
+
+fn component<T: serde::de::DeserializeOwned>(host: &HeadlessHost, entity: &str, key: &str) -> T {
+    let (e, _) = host
+        .find::<onyx_plugin_api::Name>(entity)
+        .unwrap_or_else(|| panic!("no entity `{entity}`"));
+    let blobs = host
+        .get::<onyx_runtime::world::PluginComponents>(e)
+        .unwrap();
+    serde_json::from_slice(&blobs.0[key].bytes).unwrap()
+}
+
 fn progress(host: &HeadlessHost) -> Progress {
     let (e, _) = host
         .find::<onyx_plugin_api::Name>("reloadable")
@@ -32,6 +65,13 @@ fn progress(host: &HeadlessHost) -> Progress {
 
 fn build(version: u32) -> PathBuf {
     plugin_library(&format!("fixture-reload-v{version}"))
+}
+
+/// Puts `source` at `target` the way cargo does: complete, in one rename.
+fn replace(source: &Path, target: &Path) {
+    let staging = target.with_extension("staging");
+    std::fs::copy(source, &staging).unwrap();
+    std::fs::rename(&staging, target).unwrap();
 }
 
 /// Writes `source` over `target` in several pieces with pauses, the way a linker or cargo
@@ -138,6 +178,12 @@ fn fifty_consecutive_swaps_lose_nothing() {
             "swap {swap}: state lost"
         );
         assert_eq!(p.reloads_seen, swap);
+        // The state counts every reload; a static starts over in each new build.
+        let statics: ImageStatics = component(&host, "reloadable", "fixture_reload.progress");
+        assert_eq!(
+            statics.attaches_in_image, 1,
+            "swap {swap}: statics carried over"
+        );
         assert_eq!(
             entity_count(&host),
             entities,
@@ -336,7 +382,8 @@ fn plugins_can_load_reload_and_unload_plugins_through_ctx() {
     host.step(2);
     assert_eq!(host.plugin_status(NAME), Some(&PluginStatus::Running));
     host.step(4);
-    assert_eq!(host.host().plugin(NAME).unwrap().reloads(), 2);
+    // The explicit reload swaps; reload_all leaves the unchanged file alone.
+    assert_eq!(host.host().plugin(NAME).unwrap().reloads(), 1);
     host.step(2);
     assert!(host.plugin_status(NAME).is_none());
     let log = entries(&journal);
@@ -350,4 +397,116 @@ fn plugins_can_load_reload_and_unload_plugins_through_ctx() {
             "no {expected}: {log:?}"
         );
     }
+}
+
+#[test]
+fn a_peers_traffic_flows_through_every_swap_and_no_event_is_lost() {
+    let (mut host, _dir, path) = running_v1(HostConfig::default());
+    host.load_plugin_file(&plugin_library("fixture-peer"))
+        .unwrap();
+    host.step(3);
+    for swap in 1..=10u32 {
+        let version = if swap % 2 == 1 { 2 } else { 1 };
+        replace(&build(version), &path);
+        if swap % 2 == 0 {
+            host.host_mut().reload_plugin(NAME).unwrap();
+        } else {
+            // Through the watcher, at the start of a frame.
+            let swapped = step_until(&mut host, Duration::from_secs(5), |h| {
+                progress(h).version == version
+            });
+            assert!(swapped, "swap {swap} never happened");
+        }
+        host.step(2);
+    }
+    let peer: PeerProgress = component(&host, "peer", "fixture_peer.progress");
+    let seen: PingCount = component(&host, "reloadable", "fixture_reload.progress");
+    // A ping sent in frame n is answered in n + 1 and the answer read in n + 2: all but the
+    // last two pings are answered, each once, in order, whichever build answered.
+    assert_eq!(peer.gaps, 0, "pongs lost or repeated: {peer:?}");
+    assert_eq!(peer.pongs, peer.last_pong, "{peer:?}");
+    assert_eq!(peer.last_pong, peer.sent - 2, "{peer:?}");
+    assert_eq!(
+        seen,
+        PingCount {
+            pings: peer.sent - 1,
+            ping_gaps: 0
+        },
+        "pings lost across swaps ({peer:?})"
+    );
+    assert_eq!(peer.versions, [1, 2, 1, 2, 1, 2, 1, 2, 1, 2, 1], "{peer:?}");
+    assert_eq!(host.host().plugin(NAME).unwrap().reloads(), 10);
+}
+
+#[test]
+fn reload_all_swaps_every_changed_library_and_leaves_the_unchanged_ones() {
+    let (mut host, dir, path) = running_v1(HostConfig::default());
+    let schema = dir
+        .path()
+        .join(onyx_runtime::plugins::plugin_search::library_file_name(
+            "fixture_schema",
+        ));
+    std::fs::copy(plugin_library("fixture-schema-v1"), &schema).unwrap();
+    host.load_plugin_file(&schema).unwrap();
+    host.load_plugin_file(&plugin_library("fixture-peer"))
+        .unwrap();
+    host.step(2);
+    replace(&build(2), &path);
+    replace(&plugin_library("fixture-schema-added"), &schema);
+    let errors = host.host_mut().reload_all();
+    assert!(errors.is_empty(), "{errors:?}");
+    let reloads = |host: &HeadlessHost, name: &str| host.host().plugin(name).unwrap().reloads();
+    assert_eq!(reloads(&host, NAME), 1);
+    assert_eq!(reloads(&host, "fixture_schema"), 1);
+    assert_eq!(
+        reloads(&host, "fixture_peer"),
+        0,
+        "an unchanged library was swapped"
+    );
+    host.step(1);
+    assert_eq!(progress(&host).version, 2);
+    // Nothing changed since: a second reload_all swaps nothing.
+    assert!(host.host_mut().reload_all().is_empty());
+    assert_eq!(reloads(&host, NAME), 1);
+}
+
+#[test]
+fn a_released_build_round_swaps_all_its_libraries_in_one_frame() {
+    let (mut host, dir, path) = running_v1(HostConfig::default());
+    let schema = dir
+        .path()
+        .join(onyx_runtime::plugins::plugin_search::library_file_name(
+            "fixture_schema",
+        ));
+    std::fs::copy(plugin_library("fixture-schema-v1"), &schema).unwrap();
+    host.load_plugin_file(&schema).unwrap();
+    host.step(2);
+    let schema_build = |host: &HeadlessHost| -> String {
+        let published: serde_json::Value = component(host, "schema", "fixture_schema.published");
+        published["build"].as_str().unwrap_or_default().to_owned()
+    };
+    // `onyx dev` holds the reloads while its builds run, as if the two were rebuilt in turn.
+    let gate = host.host().reload_gate();
+    gate.hold();
+    replace(&build(2), &path);
+    std::thread::sleep(Duration::from_millis(50));
+    host.step(3);
+    replace(&plugin_library("fixture-schema-added"), &schema);
+    std::thread::sleep(Duration::from_millis(50));
+    host.step(3);
+    assert_eq!(
+        (progress(&host).version, schema_build(&host).as_str()),
+        (1, "v1"),
+        "a library was swapped while the round was held"
+    );
+    gate.release([path.clone(), schema.clone()]);
+    host.step(1);
+    assert_eq!(
+        (progress(&host).version, schema_build(&host).as_str()),
+        (2, "added"),
+        "the round's libraries did not swap in the same frame"
+    );
+    host.step(5);
+    assert_eq!(host.host().plugin(NAME).unwrap().reloads(), 1);
+    assert_eq!(host.host().plugin("fixture_schema").unwrap().reloads(), 1);
 }

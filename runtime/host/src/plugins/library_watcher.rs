@@ -1,36 +1,27 @@
 //! [`LibraryWatcher`]: notices when a plugin library file has been rebuilt.
 
 use std::collections::HashMap;
-use std::hash::Hasher;
 use std::path::{Path, PathBuf};
 use std::time::Instant;
 
 use crate::fs::{FileWatcher, QUIET_PERIOD};
 
-/// How long a library file must go without change events before it is checked for
-/// completeness. Cargo writes a library in several pieces (and links it into place); loading
-/// a half-written file would fail. An ELF file whose headers say it is whole is taken at
-/// once; other files must also keep the same size over a second quiet period.
+/// How long a changed library file that does not (yet) read as a complete ELF library must
+/// go without change events, twice at the same size, before it is handed out anyway (to be
+/// refused with a sentence if it is still incomplete). An ELF file whose headers say it is
+/// whole is handed out at the first poll after its change: cargo links into place, and a
+/// writer that writes in pieces leaves the file shorter than its headers until the end.
 pub const RELOAD_QUIET_PERIOD: std::time::Duration = QUIET_PERIOD;
-
-/// A content hash of a file, to ignore writes that change nothing (a `touch`, a no-op build).
-pub fn content_hash(path: &Path) -> std::io::Result<u64> {
-    let bytes = std::fs::read(path)?;
-    let mut hasher = std::collections::hash_map::DefaultHasher::new();
-    hasher.write(&bytes);
-    Ok(hasher.finish())
-}
 
 #[derive(Debug)]
 struct WatchedFile {
-    hash: u64,
     dirty_since: Option<Instant>,
     len: Option<u64>,
 }
 
 /// Watches plugin library files (through their directories, as builds replace files) and
-/// reports each file once its new content is complete and differs from what was loaded, with
-/// the hash of that content.
+/// reports each file once its new content is complete. Whether the content differs from what
+/// was loaded is for the caller to tell (it reads the file anyway).
 pub struct LibraryWatcher {
     folders: FileWatcher,
     files: HashMap<PathBuf, WatchedFile>,
@@ -57,8 +48,8 @@ impl LibraryWatcher {
         })
     }
 
-    /// Starts watching `path`, whose current content hashes to `hash`.
-    pub fn watch(&mut self, path: &Path, hash: u64) -> notify::Result<()> {
+    /// Starts watching `path`.
+    pub fn watch(&mut self, path: &Path) -> notify::Result<()> {
         let path = absolute(path);
         if self.files.contains_key(&path) {
             return Ok(());
@@ -68,7 +59,6 @@ impl LibraryWatcher {
         self.files.insert(
             path,
             WatchedFile {
-                hash,
                 dirty_since: None,
                 len: None,
             },
@@ -86,9 +76,9 @@ impl LibraryWatcher {
         self.folders.unwatch_dir(&dir);
     }
 
-    /// Files that changed and are now complete (quiet for [`RELOAD_QUIET_PERIOD`], same size
-    /// twice, new content). Call it once per frame.
-    pub fn poll(&mut self) -> Vec<(PathBuf, u64)> {
+    /// Files that changed and are now complete: an ELF library whose headers say so at once,
+    /// another file once it kept its size over [`RELOAD_QUIET_PERIOD`]. Call it once per frame.
+    pub fn poll(&mut self) -> Vec<PathBuf> {
         let now = Instant::now();
         let files = &mut self.files;
         self.folders.drain(|at, path| {
@@ -102,39 +92,33 @@ impl LibraryWatcher {
             let Some(since) = file.dirty_since else {
                 continue;
             };
+            if super::library_check::is_complete_elf(path) {
+                file.dirty_since = None;
+                ready.push(path.clone());
+                continue;
+            }
             if now.duration_since(since) < RELOAD_QUIET_PERIOD {
                 continue;
             }
             let Ok(len) = std::fs::metadata(path).map(|m| m.len()) else {
                 continue; // removed for now; a later event will mark it again
             };
-            let complete = file.len == Some(len) || super::library_check::is_complete_elf(path);
-            if !complete {
+            if file.len == Some(len) {
+                file.dirty_since = None;
+                ready.push(path.clone());
+            } else {
                 file.len = Some(len);
                 file.dirty_since = Some(now);
-                continue;
-            }
-            file.dirty_since = None;
-            match content_hash(path) {
-                Ok(hash) if hash == file.hash => {
-                    tracing::debug!(path = %path.display(), "plugin file rewritten with the same content; ignored");
-                }
-                Ok(hash) => {
-                    file.hash = hash;
-                    ready.push((path.clone(), hash));
-                }
-                Err(error) => {
-                    tracing::warn!(path = %path.display(), "cannot read rebuilt plugin: {error}")
-                }
             }
         }
         ready
     }
 
-    /// Records that `path` now holds content hashing to `hash` (after a manual reload).
-    pub fn set_hash(&mut self, path: &Path, hash: u64) {
+    /// Forgets changes seen so far to `path` (it was just loaded by other means).
+    pub fn settle(&mut self, path: &Path) {
         if let Some(file) = self.files.get_mut(&absolute(path)) {
-            file.hash = hash;
+            file.dirty_since = None;
+            file.len = None;
         }
     }
 

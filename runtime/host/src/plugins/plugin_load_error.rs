@@ -161,6 +161,14 @@ pub enum PluginLoadError {
         /// The plugin.
         plugin: String,
     },
+    /// The file could not be read.
+    #[error("cannot read `{}`: {cause}", .path.display())]
+    Read {
+        /// The file.
+        path: PathBuf,
+        /// The I/O error (in the sentence, not chained as a `source`).
+        cause: std::io::Error,
+    },
     /// The file could not be copied to a fresh path for loading.
     #[error("could not copy `{}` to a fresh path for loading: {cause}", .path.display())]
     Copy {

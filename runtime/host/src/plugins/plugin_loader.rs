@@ -1,7 +1,9 @@
-//! [`open_library`]: opens a plugin library from disk, through a fresh copy.
+//! [`open_library`]: opens a plugin library from disk, through a fresh copy; [`OpenedLibrary`]
+//! and [`LoadTimings`], what it made and where its time went.
 
 use std::path::{Path, PathBuf};
 use std::sync::atomic::{AtomicU64, Ordering};
+use std::time::{Duration, Instant};
 
 use onyx_plugin_api::host::{LibraryError, PluginLibrary, API_VERSION};
 
@@ -11,14 +13,59 @@ use super::{PluginLoadError, Stage};
 use crate::watchdog::plugin_call::PluginCall;
 use crate::watchdog::CallTag;
 
-/// Copies `path` to a unique path and opens the copy.
+/// A library opened by [`open_library`].
+#[derive(Debug)]
+pub struct OpenedLibrary {
+    /// The opened, checked library.
+    pub library: PluginLibrary,
+    /// The unique copy that was opened (deleted again on Unix; the mapping outlives it).
+    pub loaded_from: PathBuf,
+    /// [`content_hash`] of the bytes that were loaded.
+    pub content_hash: u64,
+    /// Where the time went.
+    pub timings: LoadTimings,
+}
+
+/// The stages of [`open_library`], timed.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct LoadTimings {
+    /// Reading the file (once) and hashing it.
+    pub read: Duration,
+    /// The ELF check of the bytes read (`library_check`).
+    pub check: Duration,
+    /// Writing the fresh copy.
+    pub copy: Duration,
+    /// The system loader mapping and relocating the copy, and abi_stable's version and
+    /// layout checks of its root module.
+    pub map: Duration,
+}
+
+/// A hash of a library's bytes, to tell a rebuild that changed nothing (a `touch`, a no-op
+/// link) from a new build: CRC-32 (hardware-assisted, fast enough to run on every rebuild of
+/// a large debug library) with the length. Not a defence against crafted collisions: a
+/// collision only means a rebuild is not reloaded by itself.
+pub fn content_hash(bytes: &[u8]) -> u64 {
+    (u64::from(crc32fast::hash(bytes)) << 32) ^ bytes.len() as u64
+}
+
+/// Reads `path`, checks it and opens it through a copy at a unique path (of the part the
+/// loader maps, `library_check::loaded_part`).
 ///
 /// The dynamic loader returns the already-mapped image when asked for a path it has opened
-/// before, and a library is never unloaded (abi_stable leaks it on purpose, and glibc keeps
-/// any image that registered a thread-local destructor). So each load — the first, and every
-/// hot reload — opens a fresh copy; on Unix the copy is deleted right after opening (the
-/// mapping stays valid).
-pub fn open_library(path: &Path) -> Result<(PluginLibrary, PathBuf), PluginLoadError> {
+/// before, so each load — the first, and every hot reload — opens a fresh copy; on Unix the
+/// copy is deleted right after opening (the mapping stays valid). The file is read once: the
+/// hash, the ELF check and the copy all come from the same bytes, so what is checked is what
+/// is mapped even if the file changes meanwhile.
+pub fn open_library(path: &Path) -> Result<OpenedLibrary, PluginLoadError> {
+    let started = Instant::now();
+    let bytes = read_library(path)?;
+    let hash = content_hash(&bytes);
+    let read = started.elapsed();
+    open_library_bytes(path, &bytes, hash, read)
+}
+
+/// Reads a library file, refusing what is not a regular file.
+pub(crate) fn read_library(path: &Path) -> Result<Vec<u8>, PluginLoadError> {
     match std::fs::metadata(path) {
         Err(_) => {
             return Err(PluginLoadError::MissingFile {
@@ -37,42 +84,55 @@ pub fn open_library(path: &Path) -> Result<(PluginLibrary, PathBuf), PluginLoadE
         }
         Ok(_) => {}
     }
+    std::fs::read(path).map_err(|cause| PluginLoadError::Read {
+        path: path.to_path_buf(),
+        cause,
+    })
+}
+
+/// [`open_library`] for bytes already read from `path` (hashing to `hash`, read in `read`).
+pub(crate) fn open_library_bytes(
+    path: &Path,
+    bytes: &[u8],
+    hash: u64,
+    read: Duration,
+) -> Result<OpenedLibrary, PluginLoadError> {
+    let mut timings = LoadTimings {
+        read,
+        ..LoadTimings::default()
+    };
+    // Checked before the loader trusts it.
+    let started = Instant::now();
+    let checked = match super::library_check::check_library(bytes) {
+        Ok(()) => Ok(()),
+        Err(LibraryProblem::Truncated { needed, actual }) => Err(PluginLoadError::Truncated {
+            path: path.to_path_buf(),
+            needed,
+            actual,
+        }),
+        Err(LibraryProblem::Damaged(problem)) => Err(PluginLoadError::Damaged {
+            path: path.to_path_buf(),
+            problem,
+        }),
+    };
+    timings.check = started.elapsed();
+    checked?;
     // One load at a time in this process: the copy folder is emptied and removed after each
     // load, which must not race another load copying into it.
     static LOADING: std::sync::Mutex<()> = std::sync::Mutex::new(());
     let _loading = LOADING
         .lock()
         .unwrap_or_else(std::sync::PoisonError::into_inner);
-    let copy = fresh_copy(path)?;
-    // Check the copy (the original may still be changing) before the loader trusts it.
-    let checked = match super::library_check::check_library_file(&copy) {
-        Ok(Ok(())) => Ok(()),
-        Ok(Err(LibraryProblem::Truncated { needed, actual })) => Err(PluginLoadError::Truncated {
-            path: path.to_path_buf(),
-            needed,
-            actual,
-        }),
-        Ok(Err(LibraryProblem::Damaged(problem))) => Err(PluginLoadError::Damaged {
-            path: path.to_path_buf(),
-            problem,
-        }),
-        Err(cause) => Err(PluginLoadError::Copy {
-            path: path.to_path_buf(),
-            cause,
-        }),
-    };
-    if let Err(error) = checked {
-        let _ = std::fs::remove_file(&copy);
-        if let Some(dir) = copy.parent() {
-            let _ = std::fs::remove_dir(dir);
-        }
-        return Err(error);
-    }
+    let started = Instant::now();
+    let copy = fresh_copy(path, bytes)?;
+    timings.copy = started.elapsed();
     // The system loader maps it and runs its initialisers: a crash in there names the file.
+    let started = Instant::now();
     let opened = {
         let _call = PluginCall::enter(CallTag::library(path), Stage::Load);
         PluginLibrary::open(&copy)
     };
+    timings.map = started.elapsed();
     if cfg!(unix) {
         let _ = std::fs::remove_file(&copy);
         // Empty again on Unix (the mapping outlives the file): nothing is left behind.
@@ -81,13 +141,18 @@ pub fn open_library(path: &Path) -> Result<(PluginLibrary, PathBuf), PluginLoadE
         }
     }
     let library = opened.map_err(|error| describe(path, error))?;
-    Ok((library, copy))
+    Ok(OpenedLibrary {
+        library,
+        loaded_from: copy,
+        content_hash: hash,
+        timings,
+    })
 }
 
 /// The folder prefix of the fresh copies, followed by the process id.
 const COPY_DIR_PREFIX: &str = "onyx-plugins-";
 
-fn fresh_copy(path: &Path) -> Result<PathBuf, PluginLoadError> {
+fn fresh_copy(path: &Path, bytes: &[u8]) -> Result<PathBuf, PluginLoadError> {
     static COUNTER: AtomicU64 = AtomicU64::new(0);
     static SWEPT: std::sync::Once = std::sync::Once::new();
     SWEPT.call_once(remove_stale_copy_dirs);
@@ -103,7 +168,18 @@ fn fresh_copy(path: &Path) -> Result<PathBuf, PluginLoadError> {
         .map(|f| f.to_string_lossy().into_owned())
         .unwrap_or_else(|| "plugin".into());
     let copy = dir.join(format!("{n}-{file_name}"));
-    std::fs::copy(path, &copy).map_err(copy_error)?;
+    // Only what the loader maps (see `loaded_part`): the file was checked whole already.
+    let written = match super::library_check::loaded_part(bytes) {
+        Some((end, header)) => {
+            use std::io::Write as _;
+            std::fs::File::create(&copy).and_then(|mut file| {
+                file.write_all(&header)?;
+                file.write_all(&bytes[header.len()..end])
+            })
+        }
+        None => std::fs::write(&copy, bytes),
+    };
+    written.map_err(copy_error)?;
     Ok(copy)
 }
 

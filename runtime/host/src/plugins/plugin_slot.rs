@@ -2,7 +2,7 @@
 
 use std::path::PathBuf;
 
-use onyx_plugin_api::host::{CallError, PluginInstance};
+use onyx_plugin_api::host::{CallError, PluginInstance, PluginLibrary};
 use onyx_plugin_api::{Event, PlatformEvent};
 
 use super::{PluginStatus, Stage};
@@ -32,6 +32,8 @@ pub struct PluginSlot {
     pub(crate) tag: &'static CallTag,
     pub(crate) origin: PluginOrigin,
     pub(crate) instance: PluginInstance,
+    /// The library `instance` came from (`None` in-process), closed when it is replaced.
+    pub(crate) library: Option<PluginLibrary>,
     pub(crate) status: PluginStatus,
     pub(crate) settings: Vec<(String, String)>,
     pub(crate) content_hash: Option<u64>,

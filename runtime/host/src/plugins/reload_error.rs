@@ -42,6 +42,18 @@ pub enum ReloadError {
         /// The file.
         path: PathBuf,
     },
+    /// The new build could not read the running build's saved state (`load_state` returned
+    /// an error: a field of another type, a state type it cannot map).
+    #[error(
+        "plugin `{plugin}` was not reloaded: its new build cannot read the state of the running \
+         one: {message}"
+    )]
+    StateRefused {
+        /// The plugin.
+        plugin: String,
+        /// What `load_state` said (the state helpers name the type and the field).
+        message: String,
+    },
     /// A lifecycle step of the swap failed (old `save_state`, new `load_state` or `on_attach`).
     #[error("plugin `{plugin}` was not reloaded: {stage} of the {which} build failed: {message}")]
     Step {

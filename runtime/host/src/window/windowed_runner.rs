@@ -106,7 +106,7 @@ struct App<'h> {
 }
 
 /// Opens a window and runs `host` in it until a plugin quits, the window is closed, or
-/// `options.frames` frames have run. F5 reloads every plugin loaded from a file; F3 toggles
+/// `options.frames` frames have run. F5 reloads every plugin whose library changed; F3 toggles
 /// physics debug lines. Must be called on the main thread, once per process
 /// (winit allows one event loop).
 pub fn run_windowed(
@@ -260,7 +260,9 @@ impl ApplicationHandler for App<'_> {
                     && event.state.is_pressed()
                     && !event.repeat
                 {
-                    tracing::info!("F5: reloading every plugin loaded from a file");
+                    tracing::info!(
+                        "F5: reloading every plugin whose library changed (and faulted ones)"
+                    );
                     self.host.reload_all();
                 }
                 if event.physical_key == PhysicalKey::Code(KeyCode::F3)

@@ -38,6 +38,7 @@ mod tangents;
 mod up_axis;
 mod vertex;
 
+pub use gltf::catch_gltf_panics;
 pub use import_settings::ImportSettings;
 pub use invalid_mesh_error::InvalidMeshError;
 pub(crate) use mesh_cache::{cache_key, MeshCache};

@@ -108,6 +108,10 @@ pub struct HostArgs {
     /// (0: off; it is quiet anyway while a debugger is attached).
     #[arg(long, value_name = "SECS", default_value_t = 5.0, value_parser = parse_seconds)]
     pub watchdog: f64,
+    /// Keep every old build's library mapped after a reload or an unload (for plugins that
+    /// leave threads or callbacks of a C library running after on_detach).
+    #[arg(long)]
+    pub keep_old_builds: bool,
 }
 
 /// `onyx new-plugin`.

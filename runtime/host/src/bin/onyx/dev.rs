@@ -6,12 +6,20 @@
 //! plugin ends only the child: `onyx dev` reports it and starts a new host after the next
 //! good build.
 //!
+//! What is watched: for each plugin crate, `cargo metadata` names every local crate it is
+//! built from — itself, its path dependencies and workspace siblings, transitively (normal and
+//! build dependencies) — and each one's source folders, manifest and build script are watched
+//! (`crate_graph.rs`). An edit in a shared crate rebuilds every plugin crate that depends on
+//! it; a changed manifest asks cargo again after the build.
+//!
 //! Threads of `onyx dev`: a notify watcher feeds one coordinator thread, which debounces
-//! changes per crate and wakes that crate's builder thread. Each builder runs one
-//! `cargo build` at a time and, if changes came in meanwhile, another after it. The main
-//! thread waits for the host process. In the host, the library watcher notices the rewritten
-//! cdylib, waits until it is complete, and reloads the plugin at the start of a frame, keeping
-//! the old build when the new one cannot load; frames never wait for a build.
+//! changes and starts a *round*: it tells the host to hold its reloads, wakes the builder
+//! thread of every crate the changes touch (each runs one `cargo build` at a time) and, when
+//! all of them have finished, tells the host which libraries the round built. The host swaps
+//! every one of them that changed in one frame — plugins that share a crate never run one old
+//! and one new — keeping the old build of any that cannot load. The main thread waits for
+//! the host process; frames never wait for a build. The host hears the coordinator on its
+//! standard input, one line per message (`hold`, `swap` and a JSON list of library paths).
 
 use std::collections::HashMap;
 use std::ffi::OsString;
@@ -24,10 +32,12 @@ use std::time::{Duration, Instant};
 
 use anyhow::{anyhow, Context as _};
 use notify::{RecursiveMode, Watcher};
+use onyx_runtime::plugins::ReloadGate;
 use onyx_runtime::window::run_windowed;
 use onyx_runtime::Host;
 
 use crate::cli::{DevArgs, DevHostArgs};
+use crate::crate_graph::CrateSources;
 use crate::Failure;
 
 /// How long sources must be left alone before a rebuild starts (editors write in bursts).
@@ -45,6 +55,8 @@ struct PluginCrate {
     manifest: PathBuf,
     /// What to call it in messages: the directory's name.
     label: String,
+    /// Every file whose change rebuilds it (its local dependencies' too).
+    sources: CrateSources,
 }
 
 /// A builder's running `cargo build`, shared with the main thread so it can be stopped.
@@ -93,26 +105,46 @@ impl PluginCrate {
             .file_name()
             .map(|n| n.to_string_lossy().into_owned())
             .unwrap_or_else(|| dir.display().to_string());
+        let sources = own_sources(&dir, &label);
         Ok(Self {
             dir,
             manifest,
             label,
+            sources,
         })
+    }
+
+    /// Asks cargo which local crates this one is built from (after a build, so the lock
+    /// file is there). On failure the crate's own folder stays watched.
+    fn find_sources(&mut self) {
+        match CrateSources::of(&cargo(), &self.manifest) {
+            Ok(sources) => {
+                if sources.packages.len() > 1 {
+                    tracing::info!(
+                        plugin_crate = %self.label,
+                        "also watching the local crates it is built from: {}",
+                        sources.packages[1..].join(", ")
+                    );
+                }
+                self.sources = sources;
+            }
+            Err(error) => tracing::warn!(
+                plugin_crate = %self.label,
+                "cannot list the crates it depends on ({error:#}); watching only its own sources"
+            ),
+        }
     }
 
     /// Whether a change to `path` calls for a rebuild.
     fn is_source(&self, path: &Path) -> bool {
-        let Ok(rel) = path.strip_prefix(&self.dir) else {
-            return false;
-        };
-        let hidden_or_backup = path.file_name().is_some_and(|n| {
-            let n = n.to_string_lossy();
-            n.starts_with('.') || n.ends_with('~') || n.ends_with(".swp") || n.ends_with(".swx")
-        });
-        if hidden_or_backup {
-            return false;
-        }
-        rel.starts_with("src") || rel == Path::new("Cargo.toml") || rel == Path::new("build.rs")
+        self.sources.contains(path)
+    }
+
+    /// Whether a change to `path` may change which crates it is built from.
+    fn is_manifest(&self, path: &Path) -> bool {
+        path.file_name()
+            .is_some_and(|n| n == "Cargo.toml" || n == "Cargo.lock")
+            && self.sources.files.contains(path)
     }
 
     /// Runs `cargo build` for this crate: the compiler's messages go to our stderr, the JSON
@@ -188,6 +220,27 @@ impl PluginCrate {
     }
 }
 
+/// What the coordinator hears: file changes, and builders finishing.
+enum Message {
+    /// A file event from the watcher.
+    File(notify::Result<notify::Event>),
+    /// Crate `index` finished a build: the library it built, if the build was good.
+    Built {
+        index: usize,
+        library: Option<PathBuf>,
+    },
+}
+
+/// What is watched of a crate before cargo has said more: its `src/`, manifest and build
+/// script.
+fn own_sources(dir: &Path, label: &str) -> CrateSources {
+    CrateSources {
+        packages: vec![label.to_owned()],
+        dirs: [dir.join("src")].into(),
+        files: [dir.join("Cargo.toml"), dir.join("build.rs")].into(),
+    }
+}
+
 /// A crate's builder: a thread that runs one build at a time when told to.
 struct Builder {
     wake: Sender<()>,
@@ -195,14 +248,14 @@ struct Builder {
 }
 
 impl Builder {
-    /// Starts the builder; it sends on `built` after each good build.
-    fn spawn(krate: PluginCrate, library: PathBuf, built: Sender<()>) -> Self {
+    /// Starts the builder; it reports each build's end to the coordinator.
+    fn spawn(index: usize, krate: PluginCrate, library: PathBuf, done: Sender<Message>) -> Self {
         let (wake, woken) = channel::<()>();
         let slot = Arc::new(Mutex::new(BuildSlot::default()));
         let shared = slot.clone();
         std::thread::Builder::new()
             .name(format!("build {}", krate.label))
-            .spawn(move || build_loop(&krate, &library, &woken, &shared, &built))
+            .spawn(move || build_loop(index, &krate, &library, &woken, &shared, &done))
             .expect("can start a builder thread");
         Self { wake, slot }
     }
@@ -218,11 +271,12 @@ impl Builder {
 }
 
 fn build_loop(
+    index: usize,
     krate: &PluginCrate,
     library: &Path,
     woken: &Receiver<()>,
     slot: &Mutex<BuildSlot>,
-    built_ok: &Sender<()>,
+    done: &Sender<Message>,
 ) {
     while woken.recv().is_ok() {
         while woken.try_recv().is_ok() {} // changes queued up before now: one build covers them
@@ -232,7 +286,7 @@ fn build_loop(
         if lock(slot).stopped {
             return; // `onyx dev` is exiting
         }
-        match result {
+        let built = match result {
             Ok(Built {
                 library: Some(built),
                 fresh,
@@ -255,86 +309,194 @@ fn build_loop(
                         library.display()
                     );
                 }
-                let _ = built_ok.send(());
+                Some(library.to_path_buf())
             }
-            Ok(Built { library: None, .. }) => tracing::error!(
-                plugin_crate = %krate.label,
-                "the build produced no cdylib; the previous build keeps running"
-            ),
-            Err(error) => tracing::error!(
-                plugin_crate = %krate.label,
-                "build failed: {error:#}; the previous build keeps running"
-            ),
+            Ok(Built { library: None, .. }) => {
+                tracing::error!(
+                    plugin_crate = %krate.label,
+                    "the build produced no cdylib; the previous build keeps running"
+                );
+                None
+            }
+            Err(error) => {
+                tracing::error!(
+                    plugin_crate = %krate.label,
+                    "build failed: {error:#}; the previous build keeps running"
+                );
+                None
+            }
+        };
+        if done
+            .send(Message::Built {
+                index,
+                library: built,
+            })
+            .is_err()
+        {
+            return;
         }
     }
 }
 
-/// Debounces file events per crate and wakes the builders. Returns when the watcher is gone.
-fn coordinate(
-    events: &Receiver<notify::Result<notify::Event>>,
-    crates: &[(PluginCrate, Sender<()>)],
-) {
-    let mut dirty: HashMap<usize, Instant> = HashMap::new();
-    loop {
-        let now = Instant::now();
-        let timeout = dirty
-            .values()
-            .map(|since| (*since + DEBOUNCE).saturating_duration_since(now))
-            .min()
-            .unwrap_or(Duration::from_secs(3600));
-        match events.recv_timeout(timeout) {
-            Ok(Ok(event)) => {
-                if !matches!(event.kind, notify::EventKind::Access(_)) {
-                    for path in &event.paths {
-                        for (index, (krate, _)) in crates.iter().enumerate() {
-                            if krate.is_source(path) {
-                                tracing::debug!(path = %path.display(), "source changed");
-                                dirty.insert(index, Instant::now());
-                            }
-                        }
+/// The host process's standard input, while one runs: where rounds are announced.
+type HostControl = Arc<Mutex<Option<std::process::ChildStdin>>>;
+
+/// Tells the host one line; a host that is gone (crashed, restarting) misses it, which is
+/// fine: a new host loads the libraries as they are.
+fn tell_host(control: &HostControl, line: &str) {
+    use std::io::Write as _;
+    let mut stdin = control.lock().unwrap_or_else(|e| e.into_inner());
+    if let Some(pipe) = stdin.as_mut() {
+        if writeln!(pipe, "{line}")
+            .and_then(|()| pipe.flush())
+            .is_err()
+        {
+            *stdin = None;
+        }
+    }
+}
+
+/// The coordinator's view of the crates: their sources, their builders, the round running.
+struct Coordinator {
+    crates: Vec<PluginCrate>,
+    wakers: Vec<Sender<()>>,
+    watcher: notify::RecommendedWatcher,
+    watched: Vec<(PathBuf, bool)>,
+    control: HostControl,
+    good_builds: Sender<()>,
+    /// Crates with changes not yet built, and when each last changed.
+    dirty: HashMap<usize, Instant>,
+    /// Crates whose manifests changed: ask cargo again after their build.
+    manifests_changed: Vec<usize>,
+    /// The round being built: crates still building, libraries built so far.
+    building: Vec<usize>,
+    built: Vec<PathBuf>,
+}
+
+impl Coordinator {
+    /// Debounces file events, runs build rounds and tells the host. Returns when the
+    /// watcher is gone.
+    fn run(mut self, events: &Receiver<Message>) {
+        loop {
+            let now = Instant::now();
+            let timeout = self
+                .dirty
+                .values()
+                .map(|since| (*since + DEBOUNCE).saturating_duration_since(now))
+                .min()
+                .unwrap_or(Duration::from_secs(3600));
+            match events.recv_timeout(timeout) {
+                Ok(Message::File(Ok(event))) => self.file_changed(&event),
+                Ok(Message::File(Err(error))) => tracing::warn!("file watching: {error}"),
+                Ok(Message::Built { index, library }) => self.build_finished(index, library),
+                Err(RecvTimeoutError::Timeout) => {}
+                Err(RecvTimeoutError::Disconnected) => return,
+            }
+            self.start_round();
+        }
+    }
+
+    fn file_changed(&mut self, event: &notify::Event) {
+        if matches!(event.kind, notify::EventKind::Access(_)) {
+            return;
+        }
+        for path in &event.paths {
+            for (index, krate) in self.crates.iter().enumerate() {
+                if krate.is_source(path) {
+                    tracing::debug!(path = %path.display(), plugin_crate = %krate.label, "source changed");
+                    self.dirty.insert(index, Instant::now());
+                    if krate.is_manifest(path) && !self.manifests_changed.contains(&index) {
+                        self.manifests_changed.push(index);
                     }
                 }
             }
-            Ok(Err(error)) => tracing::warn!("file watching: {error}"),
-            Err(RecvTimeoutError::Timeout) => {}
-            Err(RecvTimeoutError::Disconnected) => return,
+        }
+    }
+
+    /// Starts a round with every crate whose changes have settled, unless one is running
+    /// (its crates' new changes wait for the next).
+    fn start_round(&mut self) {
+        if !self.building.is_empty() {
+            return;
         }
         let now = Instant::now();
-        dirty.retain(|index, since| {
-            if now.duration_since(*since) < DEBOUNCE {
-                return true;
-            }
-            let _ = crates[*index].1.send(());
-            false
-        });
-    }
-}
-
-/// Watches each crate's `src/` (recursively) and its directory (for `Cargo.toml` and
-/// `build.rs`, which editors may replace rather than rewrite).
-fn watch(
-    crates: &[PluginCrate],
-) -> anyhow::Result<(
-    notify::RecommendedWatcher,
-    Receiver<notify::Result<notify::Event>>,
-)> {
-    let (tx, rx) = channel();
-    let mut watcher = notify::recommended_watcher(move |event| {
-        let _ = tx.send(event);
-    })
-    .context("cannot start watching files")?;
-    for krate in crates {
-        let src = krate.dir.join("src");
-        if src.is_dir() {
-            watcher
-                .watch(&src, RecursiveMode::Recursive)
-                .with_context(|| format!("cannot watch `{}`", src.display()))?;
+        let settled: Vec<usize> = self
+            .dirty
+            .iter()
+            .filter(|(_, since)| now.duration_since(**since) >= DEBOUNCE)
+            .map(|(index, _)| *index)
+            .collect();
+        if settled.is_empty() {
+            return;
         }
-        watcher
-            .watch(&krate.dir, RecursiveMode::NonRecursive)
-            .with_context(|| format!("cannot watch `{}`", krate.dir.display()))?;
+        // Every crate that changed in the same burst goes into this round.
+        let round: Vec<usize> = self.dirty.drain().map(|(index, _)| index).collect();
+        if round.len() > 1 {
+            let labels: Vec<&str> = round
+                .iter()
+                .map(|i| self.crates[*i].label.as_str())
+                .collect();
+            tracing::info!(
+                "rebuilding {} plugin crates together: {}",
+                round.len(),
+                labels.join(", ")
+            );
+        }
+        tell_host(&self.control, "hold");
+        for index in &round {
+            let _ = self.wakers[*index].send(());
+        }
+        self.building = round;
+        self.built.clear();
     }
-    Ok((watcher, rx))
+
+    fn build_finished(&mut self, index: usize, library: Option<PathBuf>) {
+        self.building.retain(|i| *i != index);
+        if let Some(library) = library {
+            self.built.push(library);
+        }
+        if let Some(at) = self.manifests_changed.iter().position(|i| *i == index) {
+            self.manifests_changed.remove(at);
+            self.crates[index].find_sources();
+            self.watch_all();
+        }
+        if !self.building.is_empty() {
+            return;
+        }
+        let built = std::mem::take(&mut self.built);
+        let paths: Vec<String> = built.iter().map(|p| p.display().to_string()).collect();
+        let list = serde_json::to_string(&paths).unwrap_or_else(|_| "[]".into());
+        tell_host(&self.control, &format!("swap {list}"));
+        if !built.is_empty() {
+            let _ = self.good_builds.send(());
+        }
+    }
+
+    /// Watches what the crates' sources need and is not watched yet.
+    fn watch_all(&mut self) {
+        for krate in &self.crates {
+            for (dir, recursive) in krate.sources.watch_list() {
+                if self
+                    .watched
+                    .iter()
+                    .any(|(d, r)| *d == dir && (*r || !recursive))
+                {
+                    continue;
+                }
+                let mode = if recursive {
+                    RecursiveMode::Recursive
+                } else {
+                    RecursiveMode::NonRecursive
+                };
+                match self.watcher.watch(&dir, mode) {
+                    Ok(()) => self.watched.push((dir, recursive)),
+                    Err(error) => {
+                        tracing::warn!(dir = %dir.display(), "cannot watch: {error}")
+                    }
+                }
+            }
+        }
+    }
 }
 
 /// Runs `onyx dev`.
@@ -343,7 +505,7 @@ pub fn dev(args: DevArgs) -> Result<(), Failure> {
     let mut crates = Vec::new();
     let mut libraries = Vec::new();
     for dir in &args.plugin_crates {
-        let krate = PluginCrate::new(dir).map_err(Failure::Start)?;
+        let mut krate = PluginCrate::new(dir).map_err(Failure::Start)?;
         tracing::info!(plugin_crate = %krate.label, dir = %krate.dir.display(), "building");
         let built = krate
             .build(&Mutex::new(BuildSlot::default()))
@@ -354,31 +516,59 @@ pub fn dev(args: DevArgs) -> Result<(), Failure> {
                 krate.manifest.display()
             ))
         })?;
+        krate.find_sources();
         libraries.push(library);
         crates.push(krate);
     }
 
-    // 2. Watch the sources; a builder per crate.
-    let (watcher, events) = watch(&crates).map_err(Failure::Start)?;
-    let (built_ok, good_builds) = channel();
+    // 2. Watch the sources (every local crate each plugin is built from); a builder per crate.
+    let (messages, events) = channel();
+    let file_events = messages.clone();
+    let watcher = notify::recommended_watcher(move |event| {
+        let _ = file_events.send(Message::File(event));
+    })
+    .context("cannot start watching files")
+    .map_err(Failure::Start)?;
+    let (good_builds_tx, good_builds) = channel();
+    let control: HostControl = Arc::default();
     let mut builders = Vec::new();
-    let mut wakers = Vec::new();
-    for (krate, library) in crates.into_iter().zip(libraries.iter().cloned()) {
-        let builder = Builder::spawn(krate.clone(), library, built_ok.clone());
-        wakers.push((krate, builder.wake.clone()));
-        builders.push(builder);
+    for (index, (krate, library)) in crates.iter().zip(&libraries).enumerate() {
+        builders.push(Builder::spawn(
+            index,
+            krate.clone(),
+            library.clone(),
+            messages.clone(),
+        ));
     }
+    let mut coordinator = Coordinator {
+        wakers: builders.iter().map(|b| b.wake.clone()).collect(),
+        crates,
+        watcher,
+        watched: Vec::new(),
+        control: control.clone(),
+        good_builds: good_builds_tx,
+        dirty: HashMap::new(),
+        manifests_changed: Vec::new(),
+        building: Vec::new(),
+        built: Vec::new(),
+    };
+    coordinator.watch_all();
+    if coordinator.watched.is_empty() {
+        return Err(Failure::Start(anyhow!(
+            "cannot watch any of the plugin sources"
+        )));
+    }
+    drop(messages);
     std::thread::Builder::new()
         .name("watch sources".into())
-        .spawn(move || coordinate(&events, &wakers))
+        .spawn(move || coordinator.run(&events))
         .expect("can start the watcher thread");
     tracing::info!("watching the plugin sources; save a change to rebuild and reload");
 
     // 3. The host, in a process of its own, started again after a crash and a good build.
-    let result = supervise(&libraries, &good_builds);
+    let result = supervise(&libraries, &good_builds, &control);
 
-    // 4. Stop watching, stop builds in progress.
-    drop(watcher);
+    // 4. Stop builds in progress (the watcher goes with the coordinator at exit).
     for builder in &builders {
         builder.stop();
     }
@@ -388,10 +578,14 @@ pub fn dev(args: DevArgs) -> Result<(), Failure> {
 /// Runs host processes until one ends on its own terms: a clean end (`Ok`), faults at the end
 /// (exit 1, already reported), or a first start that failed (exit 2, already reported). After
 /// a crash — or a failed start of a new build — it waits for the next good build.
-fn supervise(libraries: &[PathBuf], good_builds: &Receiver<()>) -> Result<(), Failure> {
+fn supervise(
+    libraries: &[PathBuf],
+    good_builds: &Receiver<()>,
+    control: &HostControl,
+) -> Result<(), Failure> {
     let mut first = true;
     loop {
-        let status = run_host_process(libraries).map_err(Failure::Start)?;
+        let status = run_host_process(libraries, control).map_err(Failure::Start)?;
         match status.code() {
             Some(0) => return Ok(()),
             Some(1) => return Err(Failure::Reported(1)),
@@ -414,8 +608,8 @@ fn supervise(libraries: &[PathBuf], good_builds: &Receiver<()>) -> Result<(), Fa
 }
 
 /// Runs `onyx dev-host` with this process's `dev` arguments and `libraries`; its output is
-/// ours.
-fn run_host_process(libraries: &[PathBuf]) -> anyhow::Result<ExitStatus> {
+/// ours, its input is `control` (the build rounds) while it runs.
+fn run_host_process(libraries: &[PathBuf], control: &HostControl) -> anyhow::Result<ExitStatus> {
     let exe =
         std::env::current_exe().context("cannot find the onyx executable to start the host")?;
     let mut args: Vec<OsString> = std::env::args_os().collect();
@@ -430,9 +624,32 @@ fn run_host_process(libraries: &[PathBuf]) -> anyhow::Result<ExitStatus> {
     for library in libraries {
         command.arg("--library").arg(library);
     }
-    command.args(dev_args);
+    command.args(dev_args).stdin(Stdio::piped());
     let mut child = command.spawn().context("cannot start the host process")?;
-    child.wait().context("cannot wait for the host process")
+    *control.lock().unwrap_or_else(|e| e.into_inner()) = child.stdin.take();
+    let status = child.wait().context("cannot wait for the host process");
+    *control.lock().unwrap_or_else(|e| e.into_inner()) = None;
+    status
+}
+
+/// Reads `onyx dev`'s round messages from standard input and passes them to `gate`; at the
+/// end of input (`onyx dev` is gone) nothing stays held.
+fn follow_rounds(gate: ReloadGate) {
+    for line in std::io::stdin().lines() {
+        let Ok(line) = line else { break };
+        if line == "hold" {
+            gate.hold();
+        } else if let Some(list) = line.strip_prefix("swap ") {
+            match serde_json::from_str::<Vec<PathBuf>>(list) {
+                Ok(libraries) => gate.release(libraries),
+                Err(error) => {
+                    tracing::warn!("onyx dev sent a swap the host cannot read ({error}): {line}");
+                    gate.release([]);
+                }
+            }
+        }
+    }
+    gate.release([]);
 }
 
 fn describe_status(status: ExitStatus) -> String {
@@ -455,6 +672,11 @@ pub fn dev_host(args: DevHostArgs) -> Result<(), Failure> {
     host.set_hot_reload(true)
         .context("cannot watch the plugin libraries")
         .map_err(Failure::Start)?;
+    let gate = host.reload_gate();
+    std::thread::Builder::new()
+        .name("dev rounds".into())
+        .spawn(move || follow_rounds(gate))
+        .expect("can start the thread that reads onyx dev's messages");
     let frames = if args.dev.host.headless {
         run_headless(&mut host, args.dev.host.frames)
     } else {
@@ -502,6 +724,7 @@ mod tests {
             dir: dir.to_path_buf(),
             manifest: dir.join("Cargo.toml"),
             label: "demo".into(),
+            sources: own_sources(dir, "demo"),
         }
     }
 

@@ -1,6 +1,7 @@
 //! `onyx`: the command line of the Onyx host.
 
 mod cli;
+mod crate_graph;
 mod dev;
 mod logging;
 mod new_plugin;
@@ -70,6 +71,7 @@ fn host_config(args: &HostArgs) -> HostConfig {
         search_path: PluginSearchPath::from_env(),
         // Relative model and texture paths start from the working directory.
         asset_root: Default::default(),
+        keep_old_builds: args.keep_old_builds,
         ..HostConfig::default()
     }
 }

@@ -138,17 +138,91 @@ fn truncation_of(header: &Header, endian: Endianness, data: &[u8]) -> u64 {
     ph_end.max(sh_end).max(segments)
 }
 
+/// What of an ELF library the system loader reads: the bytes up to the end of the last
+/// segment (or of the program headers), and the ELF header with the section-header fields
+/// cleared, to write in its place. `None` when that is the whole file or it is not a 64-bit
+/// ELF file whose program headers parse (then the whole file is copied).
+///
+/// The loader maps segments through the program headers and never reads section headers;
+/// what lies after the segments (debug info, the static symbol table, the section headers) is
+/// only read by tools from the file, and a hot-reload copy is deleted as soon as it is mapped.
+/// Copying without it makes each swap write less (a debug plugin is mostly debug info).
+pub fn loaded_part(data: &[u8]) -> Option<(usize, Vec<u8>)> {
+    const HEADER_LEN: usize = std::mem::size_of::<Header>();
+    if data.len() < HEADER_LEN || &data[..4] != b"\x7fELF" || data[4] != elf::ELFCLASS64 {
+        return None;
+    }
+    let header = Header::parse(data).ok()?;
+    let endian = header.endian().ok()?;
+    let ph_end = header
+        .e_phoff(endian)
+        .checked_add(u64::from(header.e_phentsize(endian)) * u64::from(header.e_phnum(endian)))?;
+    let segments_end = header
+        .program_headers(endian, data)
+        .ok()?
+        .iter()
+        .map(|p| p.p_offset(endian).checked_add(p.p_filesz(endian)))
+        .try_fold(0u64, |end, e| e.map(|e| end.max(e)))?;
+    let end = usize::try_from(ph_end.max(segments_end))
+        .ok()?
+        .max(HEADER_LEN);
+    if end >= data.len() {
+        return None;
+    }
+    let mut new_header = *header;
+    new_header.e_shoff = object::U64::new(endian, 0);
+    new_header.e_shnum = object::U16::new(endian, 0);
+    new_header.e_shstrndx = object::U16::new(endian, 0);
+    Some((end, object::pod::bytes_of(&new_header).to_vec()))
+}
+
 /// Whether `path` is an ELF file that its own headers say is complete (`false` for other
-/// formats, which need another way to tell).
+/// formats, which need another way to tell). Reads only the ELF header and the program
+/// headers (a few hundred bytes), not the file.
 pub fn is_complete_elf(path: &Path) -> bool {
-    let Ok(data) = std::fs::read(path) else {
+    use std::io::Read as _;
+    let Ok(file) = std::fs::File::open(path) else {
         return false;
     };
-    if data.len() < 5 || &data[..4] != b"\x7fELF" {
+    let Ok(len) = file.metadata().map(|m| m.len()) else {
+        return false;
+    };
+    // The ELF header, then as far as the program headers reach (they follow it in every
+    // library a linker writes; a table further in is read whole).
+    let mut head = Vec::with_capacity(4096);
+    if file.take(4096).read_to_end(&mut head).is_err() || head.len() < 64 {
         return false;
     }
-    !matches!(check_library(&data), Err(LibraryProblem::Truncated { .. }))
-        && Header::parse(&*data).is_ok()
+    if &head[..4] != b"\x7fELF" || head[4] != elf::ELFCLASS64 {
+        return false;
+    }
+    let Ok(header) = Header::parse(&*head) else {
+        return false;
+    };
+    let Ok(endian) = header.endian() else {
+        return false;
+    };
+    let ph_end = header
+        .e_phoff(endian)
+        .saturating_add(u64::from(header.e_phentsize(endian)) * u64::from(header.e_phnum(endian)));
+    if ph_end > head.len() as u64 {
+        let Ok(all) = std::fs::read(path) else {
+            return false;
+        };
+        return needed_size(header_of(&all), &all).is_some_and(|needed| needed <= all.len() as u64);
+    }
+    needed_size(Some(header), &head).is_some_and(|needed| needed <= len)
+}
+
+fn header_of(data: &[u8]) -> Option<&Header> {
+    Header::parse(data).ok()
+}
+
+/// The size `header` (whose program headers lie in `data`) says its file has.
+fn needed_size(header: Option<&Header>, data: &[u8]) -> Option<u64> {
+    let header = header?;
+    let endian = header.endian().ok()?;
+    Some(truncation_of(header, endian, data))
 }
 
 #[cfg(test)]
@@ -197,5 +271,71 @@ mod tests {
             Ok(()),
             "not ELF: the loader judges"
         );
+    }
+
+    #[test]
+    fn the_loaded_part_keeps_every_segment_and_drops_the_section_headers() {
+        let libc = this_library();
+        if libc.is_empty() {
+            eprintln!("skipped: no libc.so mapped (not glibc on Linux)");
+            return;
+        }
+        let Some((end, header)) = loaded_part(&libc) else {
+            // A libc with nothing after its segments: nothing to drop.
+            return;
+        };
+        assert!(end < libc.len());
+        let mut copy = header.clone();
+        copy.extend_from_slice(&libc[header.len()..end]);
+        let parsed = Header::parse(&*copy).expect("still an ELF header");
+        let endian = parsed.endian().unwrap();
+        assert_eq!((parsed.e_shoff(endian), parsed.e_shnum(endian)), (0, 0));
+        let original = Header::parse(&*libc).unwrap();
+        let before = original.program_headers(endian, &*libc).unwrap();
+        let after = parsed.program_headers(endian, &*copy).unwrap();
+        assert_eq!(before.len(), after.len());
+        for (b, a) in before.iter().zip(after) {
+            // Past the ELF header (the first segment holds it, patched), byte for byte.
+            let start = (b.p_offset(endian) as usize).max(header.len());
+            let end = ((b.p_offset(endian) + b.p_filesz(endian)) as usize).max(start);
+            assert_eq!(b.p_type(endian), a.p_type(endian));
+            assert!(
+                libc[start..end] == copy[start..end],
+                "a segment's bytes changed"
+            );
+        }
+        // And the loader's own check passes on what is written.
+        assert_eq!(check_library(&copy), Ok(()));
+        assert_eq!(
+            loaded_part(b"not an ELF file at all, but long enough for a header....."),
+            None
+        );
+    }
+
+    #[test]
+    fn completeness_is_read_from_the_headers_alone() {
+        let libc = this_library();
+        if libc.is_empty() {
+            eprintln!("skipped: no libc.so mapped (not glibc on Linux)");
+            return;
+        }
+        let dir = tempfile::tempdir().unwrap();
+        let path = dir.path().join("libc-copy.so");
+        std::fs::write(&path, &libc).unwrap();
+        assert!(is_complete_elf(&path));
+        // Cut anywhere after the headers: the headers still say how long it must be.
+        for cut in [libc.len() / 3, libc.len() - 1] {
+            std::fs::write(&path, &libc[..cut]).unwrap();
+            assert!(!is_complete_elf(&path), "cut at {cut}");
+        }
+        std::fs::write(&path, &libc[..10]).unwrap();
+        assert!(!is_complete_elf(&path), "a cut ELF header");
+        std::fs::write(
+            &path,
+            b"plain text, long enough to hold an ELF header but not one",
+        )
+        .unwrap();
+        assert!(!is_complete_elf(&path), "not ELF");
+        assert!(!is_complete_elf(&dir.path().join("missing.so")));
     }
 }
