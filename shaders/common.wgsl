@@ -1,113 +1,147 @@
 // Shared declarations, prepended by the renderer to every other shader in this folder.
-// Conventions: Y up, right-handed, world units are metres, clip depth 0..1.
-// Colours are linear; the colour target is sRGB, so the hardware encodes on write.
+// Conventions: Y up, right-handed, world units are metres. Everything the GPU sees is
+// camera-relative (the camera sits at the origin; `frame.camera_world` is where it is in the
+// world). Depth is reversed: 1 at the near plane, 0 at infinity. The scene is drawn in linear
+// HDR; tonemap.wgsl maps it to the display.
 
-struct PointLight {
-    // xyz: world position, w: range in metres (light reaches zero at this distance).
+const PI: f32 = 3.14159265358979;
+const MAX_LOCAL_LIGHTS: u32 = 16u;
+
+struct LocalLight {
+    // xyz: camera-relative position, w: range in metres (the light reaches zero there).
     position_range: vec4<f32>,
-    // rgb: linear colour, w: intensity.
-    color_intensity: vec4<f32>,
+    // rgb: colour * intensity, w: 0 point light, 1 spot light.
+    color_kind: vec4<f32>,
+    // xyz: spot direction (unit), w: cosine of the outer cone angle.
+    direction_cos: vec4<f32>,
+    // x: 1 / (cos inner - cos outer), y: first shadow layer (< 0: none), z: depth bias (m),
+    // w: normal bias (texels).
+    cone_shadow: vec4<f32>,
+    // x: shadow near, y: shadow far, z: texel size one metre from the light.
+    shadow_range: vec4<f32>,
 };
 
 struct Frame {
     view_proj: mat4x4<f32>,
     inv_view_proj: mat4x4<f32>,
-    // xyz: camera position, w: 1.0 for an orthographic camera, 0.0 for perspective.
-    camera_position: vec4<f32>,
-    // xyz: direction the camera looks along (unit).
+    // xyz: camera world position, w: 1.0 for an orthographic camera, 0.0 for perspective.
+    camera_world: vec4<f32>,
+    // xyz: direction the camera looks along (unit), w: near plane.
     camera_forward: vec4<f32>,
-    // rgb: ambient colour * intensity.
+    // rgb: scale of the sky's image-based light, w: highest mip of the specular sky.
     ambient: vec4<f32>,
     // xyz: direction the sun light travels (unit), w: 1.0 when the sun is on.
     sun_direction: vec4<f32>,
-    // rgb: sun colour * intensity.
+    // rgb: sun colour * intensity, w: 1.0 when it casts shadows.
     sun_color: vec4<f32>,
-    point_lights: array<PointLight, 8>,
-    // x: number of point lights in use.
+    // x: depth bias (m), y: normal bias (texels), z: cascades, w: filter radius (texels).
+    sun_shadow: vec4<f32>,
+    // View depth where each cascade ends.
+    cascade_splits: vec4<f32>,
+    // World size of one texel of each cascade.
+    cascade_texels: vec4<f32>,
+    cascades: array<mat4x4<f32>, 4>,
+    lights: array<LocalLight, 16>,
+    local_shadows: array<mat4x4<f32>, 16>,
+    // x: local lights in use, y: directional shadow side, z: local shadow side (texels).
     counts: vec4<u32>,
     // x, y: viewport size in pixels; z, w: their reciprocals.
     viewport: vec4<f32>,
     // x: grid cell size (m), y: grid fade distance (m), z: major line every N cells.
     grid: vec4<f32>,
+    // x: exposure multiplier, y: tone-mapping operator, z: 1 to encode sRGB here, w: sky on.
+    output: vec4<f32>,
+    sky_zenith: vec4<f32>,
+    sky_horizon: vec4<f32>,
+    sky_ground: vec4<f32>,
+};
+
+// One drawn object: rows of its camera-relative model matrix and its material factors.
+struct Object {
+    row_0: vec4<f32>,
+    row_1: vec4<f32>,
+    row_2: vec4<f32>,
+    // Linear RGBA base colour.
+    color: vec4<f32>,
+    // Metallic, roughness, normal scale, occlusion strength.
+    pbr: vec4<f32>,
+    // Emissive RGB, alpha cutoff.
+    emissive: vec4<f32>,
 };
 
 @group(0) @binding(0) var<uniform> frame: Frame;
+@group(0) @binding(1) var<storage, read> objects: array<Object>;
 
 struct VertexIn {
     @location(0) position: vec3<f32>,
     @location(1) normal: vec3<f32>,
     @location(2) uv: vec2<f32>,
+    @location(3) tangent: vec4<f32>,
 };
 
 struct InstanceIn {
-    @location(3) model_0: vec4<f32>,
-    @location(4) model_1: vec4<f32>,
-    @location(5) model_2: vec4<f32>,
-    @location(6) model_3: vec4<f32>,
-    @location(7) normal_0: vec4<f32>,
-    @location(8) normal_1: vec4<f32>,
-    @location(9) normal_2: vec4<f32>,
-    @location(10) color: vec4<f32>,
+    // Slot of the object in `objects`.
+    @location(4) object: u32,
 };
 
 struct MeshOut {
     @builtin(position) clip_position: vec4<f32>,
+    // Camera-relative position.
     @location(0) world_position: vec3<f32>,
     @location(1) world_normal: vec3<f32>,
     @location(2) uv: vec2<f32>,
-    @location(3) color: vec4<f32>,
+    @location(3) @interpolate(flat) object: u32,
+    @location(4) world_tangent: vec4<f32>,
 };
 
+// The model matrix's linear part applied to `v`.
+fn object_linear(o: Object, v: vec3<f32>) -> vec3<f32> {
+    return vec3<f32>(dot(o.row_0.xyz, v), dot(o.row_1.xyz, v), dot(o.row_2.xyz, v));
+}
+
+fn object_point(o: Object, p: vec3<f32>) -> vec3<f32> {
+    let h = vec4<f32>(p, 1.0);
+    return vec3<f32>(dot(o.row_0, h), dot(o.row_1, h), dot(o.row_2, h));
+}
+
+// Normals transform by the cofactor matrix (the inverse transpose up to a positive scale,
+// times the determinant's sign): right for any scale, and no inverse on the CPU.
+fn object_normal(o: Object, n: vec3<f32>) -> vec3<f32> {
+    let c0 = vec3<f32>(o.row_0.x, o.row_1.x, o.row_2.x);
+    let c1 = vec3<f32>(o.row_0.y, o.row_1.y, o.row_2.y);
+    let c2 = vec3<f32>(o.row_0.z, o.row_1.z, o.row_2.z);
+    let cofactor = mat3x3<f32>(cross(c1, c2), cross(c2, c0), cross(c0, c1));
+    return cofactor * n;
+}
+
 fn transform_mesh_vertex(vertex: VertexIn, instance: InstanceIn) -> MeshOut {
-    let model = mat4x4<f32>(instance.model_0, instance.model_1, instance.model_2, instance.model_3);
-    let normal_matrix = mat3x3<f32>(instance.normal_0.xyz, instance.normal_1.xyz, instance.normal_2.xyz);
-    let world = model * vec4<f32>(vertex.position, 1.0);
+    let o = objects[instance.object];
+    let world = object_point(o, vertex.position);
     var out: MeshOut;
-    out.clip_position = frame.view_proj * world;
-    out.world_position = world.xyz;
-    out.world_normal = normal_matrix * vertex.normal;
+    out.clip_position = frame.view_proj * vec4<f32>(world, 1.0);
+    out.world_position = world;
+    out.world_normal = object_normal(o, vertex.normal);
     out.uv = vertex.uv;
-    out.color = instance.color;
+    out.object = instance.object;
+    // A mirroring transform flips the bitangent.
+    let det = dot(cross(o.row_0.xyz, o.row_1.xyz), o.row_2.xyz);
+    out.world_tangent = vec4<f32>(object_linear(o, vertex.tangent.xyz), vertex.tangent.w * select(1.0, -1.0, det < 0.0));
     return out;
 }
 
 // Direction from the surface towards the viewer.
 fn view_direction(world_position: vec3<f32>) -> vec3<f32> {
-    if (frame.camera_position.w > 0.5) {
+    if (frame.camera_world.w > 0.5) {
         return -frame.camera_forward.xyz;
     }
-    return normalize(frame.camera_position.xyz - world_position);
+    return normalize(-world_position);
 }
 
-const SPECULAR_STRENGTH: f32 = 0.25;
-const SPECULAR_POWER: f32 = 32.0;
-
-fn light_contribution(n: vec3<f32>, v: vec3<f32>, l: vec3<f32>, radiance: vec3<f32>, albedo: vec3<f32>) -> vec3<f32> {
-    let n_dot_l = max(dot(n, l), 0.0);
-    let h = normalize(l + v);
-    let specular = SPECULAR_STRENGTH * pow(max(dot(n, h), 0.0), SPECULAR_POWER) * step(0.0001, n_dot_l);
-    return radiance * (albedo * n_dot_l + vec3<f32>(specular));
-}
-
-// Ambient + sun + point lights, Lambert diffuse with a small Blinn-Phong highlight.
-fn shade(world_position: vec3<f32>, world_normal: vec3<f32>, albedo: vec3<f32>) -> vec3<f32> {
-    let n = normalize(world_normal);
-    let v = view_direction(world_position);
-    var color = frame.ambient.rgb * albedo;
-    if (frame.sun_direction.w > 0.5) {
-        color += light_contribution(n, v, -frame.sun_direction.xyz, frame.sun_color.rgb, albedo);
+// The sky's radiance in direction `dir` (unit): the same function as `Sky::radiance`.
+fn sky_radiance(dir: vec3<f32>, zenith: vec3<f32>, horizon: vec3<f32>, ground: vec3<f32>) -> vec3<f32> {
+    let y = clamp(dir.y, -1.0, 1.0);
+    if (y >= 0.0) {
+        return mix(horizon, zenith, sqrt(y));
     }
-    let count = min(frame.counts.x, 8u);
-    for (var i = 0u; i < count; i += 1u) {
-        let light = frame.point_lights[i];
-        let to_light = light.position_range.xyz - world_position;
-        let distance = length(to_light);
-        let range = max(light.position_range.w, 0.0001);
-        // Smooth window falloff: 1 at the light, 0 at `range`.
-        let window = clamp(1.0 - pow(distance / range, 4.0), 0.0, 1.0);
-        let attenuation = window * window / (1.0 + distance * distance);
-        let radiance = light.color_intensity.rgb * light.color_intensity.w * attenuation;
-        color += light_contribution(n, v, to_light / max(distance, 0.0001), radiance, albedo);
-    }
-    return color;
+    return mix(horizon, ground, min(-y * 4.0, 1.0));
 }

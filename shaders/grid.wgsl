@@ -1,7 +1,7 @@
-// Editor grid: an infinite plane at Y = 0 drawn as one fullscreen triangle. Each pixel casts
-// a ray through the inverse view-projection, intersects the plane, draws anti-aliased cell
-// lines that fade with distance, a red X axis (z = 0) and a blue Z axis (x = 0), and writes
-// the hit depth so meshes hide the grid correctly.
+// Editor grid: an infinite plane at world Y = 0 drawn as one fullscreen triangle. Each pixel
+// casts a ray through the inverse (camera-relative) view-projection, intersects the plane,
+// draws anti-aliased cell lines that fade with distance, a red X axis (z = 0) and a blue Z
+// axis (x = 0), and writes the hit depth so meshes hide the grid correctly.
 
 const AXIS_X_COLOR: vec3<f32> = vec3<f32>(0.85, 0.1, 0.1);
 const AXIS_Z_COLOR: vec3<f32> = vec3<f32>(0.1, 0.25, 0.9);
@@ -50,18 +50,22 @@ fn axis_coverage(distance: f32, derivative: f32) -> f32 {
 
 @fragment
 fn fs_main(in: GridOut) -> GridFragment {
-    let near_point = unproject(in.ndc, 0.0);
-    let far_point = unproject(in.ndc, 1.0);
-    let direction = far_point - near_point;
-    if (abs(direction.y) < 1e-8) {
+    // Reverse-Z: depth 1 is the near plane; 0.5 lies farther along the same ray (a
+    // perspective camera's depth 0 is at infinity).
+    let near_point = unproject(in.ndc, 1.0);
+    let farther = unproject(in.ndc, 0.5);
+    let direction = farther - near_point;
+    if (abs(direction.y) < 1e-12) {
         discard;
     }
-    let t = -near_point.y / direction.y;
-    if (t <= 0.0 || t > 1.0) {
+    // The plane is at world Y = 0, camera-relative Y = -camera height.
+    let plane_y = -frame.camera_world.y;
+    let t = (plane_y - near_point.y) / direction.y;
+    if (t <= 0.0) {
         discard;
     }
     let hit = near_point + direction * t;
-    let coord = hit.xz;
+    let coord = hit.xz + frame.camera_world.xz;
 
     let cell = max(frame.grid.x, 1e-4);
     let major = cell * max(frame.grid.z, 1.0);
@@ -84,9 +88,9 @@ fn fs_main(in: GridOut) -> GridFragment {
 
     // Fade with distance from the camera (horizontal distance for a perspective camera,
     // distance from the view centre for an orthographic one).
-    var reference = frame.camera_position.xyz;
-    if (frame.camera_position.w > 0.5) {
-        reference = unproject(vec2<f32>(0.0, 0.0), 0.0);
+    var reference = vec3<f32>(0.0);
+    if (frame.camera_world.w > 0.5) {
+        reference = unproject(vec2<f32>(0.0, 0.0), 1.0);
     }
     let distance = length(hit.xz - reference.xz);
     let fade = 1.0 - smoothstep(frame.grid.y * 0.5, frame.grid.y, distance);
@@ -99,5 +103,9 @@ fn fs_main(in: GridOut) -> GridFragment {
     var out: GridFragment;
     out.color = vec4<f32>(color, alpha);
     out.depth = clamp(clip.z / clip.w, 0.0, 1.0);
+    // Orthographic: the far plane bounds the grid too.
+    if (clip.z < 0.0) {
+        discard;
+    }
     return out;
 }

@@ -26,7 +26,9 @@ fn checker(p: vec3<f32>) -> f32 {
 
 @fragment
 fn fs_main(in: MeshOut) -> @location(0) vec4<f32> {
-    let albedo = mix(MAGENTA, DARK, checker(in.world_position / CELL_M + vec3<f32>(CELL_OFFSET)));
-    let lit = shade(in.world_position, in.world_normal, albedo);
+    // The pattern is laid in world space: the camera-relative position plus the camera's.
+    let world = in.world_position + frame.camera_world.xyz;
+    let albedo = mix(MAGENTA, DARK, checker(world / CELL_M + vec3<f32>(CELL_OFFSET)));
+    let lit = shade_simple(in.world_position, in.world_normal, albedo);
     return vec4<f32>(max(lit, albedo * MIN_BRIGHTNESS), 1.0);
 }

@@ -4,8 +4,8 @@
 // `vertex_index % 3` names the corner, and no unindexed copy of the mesh is kept.
 
 const WIRE_WIDTH_PX: f32 = 1.0;
-// Floats per vertex in the mesh buffer: position (3), normal (3), uv (2).
-const VERTEX_FLOATS: u32 = 8u;
+// Floats per vertex in the mesh buffer: position (3), normal (3), uv (2), tangent (4).
+const VERTEX_FLOATS: u32 = 12u;
 
 @group(1) @binding(0) var<storage, read> mesh_vertices: array<f32>;
 @group(1) @binding(1) var<storage, read> mesh_indices: array<u32>;
@@ -23,12 +23,13 @@ fn vs_main(@builtin(vertex_index) vertex_index: u32, instance: InstanceIn) -> Wi
     vertex.position = vec3<f32>(mesh_vertices[base], mesh_vertices[base + 1u], mesh_vertices[base + 2u]);
     vertex.normal = vec3<f32>(mesh_vertices[base + 3u], mesh_vertices[base + 4u], mesh_vertices[base + 5u]);
     vertex.uv = vec2<f32>(mesh_vertices[base + 6u], mesh_vertices[base + 7u]);
+    vertex.tangent = vec4<f32>(mesh_vertices[base + 8u], mesh_vertices[base + 9u], mesh_vertices[base + 10u], mesh_vertices[base + 11u]);
     let mesh = transform_mesh_vertex(vertex, instance);
     var out: WireOut;
     out.clip_position = mesh.clip_position;
     let corner = vertex_index % 3u;
     out.barycentric = vec3<f32>(f32(corner == 0u), f32(corner == 1u), f32(corner == 2u));
-    out.color = mesh.color;
+    out.color = objects[instance.object].color;
     return out;
 }
 
@@ -40,5 +41,6 @@ fn fs_main(in: WireOut) -> @location(0) vec4<f32> {
     if (coverage < 0.5) {
         discard;
     }
-    return vec4<f32>(in.color.rgb, 1.0);
+    // A debug view: alpha 0 tells tone mapping to show the colour as it is.
+    return vec4<f32>(in.color.rgb, 0.0);
 }

@@ -7,7 +7,8 @@
 //!   label, local pose and place in the scene graph; `global_transform.rs`: the world pose
 //!   the host computes from them.
 //! - `mesh_renderer.rs` ([`MeshRenderer`], [`Material`]), `mesh_id.rs` ([`MeshId`],
-//!   [`TextureId`]), `shading_mode.rs`, `camera.rs`, `light.rs`: what the renderer draws.
+//!   [`TextureId`]), `shading_mode.rs`, `alpha_mode.rs`, `camera.rs`, `light.rs`: what the
+//!   renderer draws.
 //! - `debug_line.rs`: [`DebugLine`], one frame's debug drawing.
 //! - `rigid_body.rs` ([`RigidBody`], [`BodyKind`], [`LockedAxes`]), `collider.rs`
 //!   ([`Collider`], [`ColliderShape`]), `joint.rs` ([`Joint`], [`JointTarget`]), `ray_hit.rs`
@@ -19,6 +20,7 @@
 //! - `bundle.rs`: [`Bundle`], components spawned together.
 //! - `entity_transform.rs`, `blob_format.rs`: rows of bulk queries, raw-blob encodings.
 
+mod alpha_mode;
 mod animator;
 mod blob_format;
 mod builtin;
@@ -43,6 +45,7 @@ mod rigid_body;
 mod shading_mode;
 mod transform;
 
+pub use alpha_mode::AlphaMode;
 pub use animator::{AnimationId, Animator, AnimatorFile};
 pub use blob_format::BlobFormat;
 pub use builtin::{Builtin, BuiltinFn, BuiltinVisitor, FileRefs, HostRefs, InvalidValue, Listed};

@@ -7,8 +7,9 @@ use base64::Engine as _;
 use onyx_plugin_api::glam::{EulerRot, Quat, Vec3};
 use onyx_plugin_api::tools::{ComponentKey, ComponentValue, PluginValue};
 use onyx_plugin_api::{
-    egui, BodyKind, BuiltinId, BuiltinValue, Camera, Collider, ColliderShape, Component, Ctx,
-    Entity, Light, MeshRenderer, Parent, Projection, RigidBody, Script, ShadingMode, Transform,
+    egui, AlphaMode, BodyKind, BuiltinId, BuiltinValue, Camera, Collider, ColliderShape, Component,
+    Ctx, Entity, Light, Material, MeshRenderer, Parent, Projection, RigidBody, Script, ShadingMode,
+    Transform,
 };
 
 use crate::history::Command;
@@ -440,16 +441,53 @@ fn mesh_renderer_ui(ui: &mut egui::Ui, m: &mut MeshRenderer) {
                 }
             });
     });
+    material_ui(ui, &mut m.material);
     ui.checkbox(&mut m.visible, "Visible");
+}
+
+const ALPHA_MODES: [AlphaMode; 3] = [AlphaMode::Opaque, AlphaMode::Mask, AlphaMode::Blend];
+
+/// The physically based part of a material: metallic, roughness, emission, alpha, sides.
+fn material_ui(ui: &mut egui::Ui, m: &mut Material) {
+    ui.horizontal(|ui| {
+        ui.label("Metallic");
+        ui.add(ranged(&mut m.metallic, 0.01, 0.0..=1.0));
+        ui.label("Roughness");
+        ui.add(ranged(&mut m.roughness, 0.01, 0.0..=1.0));
+    });
+    ui.horizontal(|ui| {
+        ui.label("Emissive");
+        color_rgb(ui, &mut m.emissive);
+    });
+    ui.horizontal(|ui| {
+        ui.label("Alpha");
+        egui::ComboBox::from_id_salt("alpha-mode")
+            .selected_text(format!("{:?}", m.alpha_mode))
+            .show_ui(ui, |ui| {
+                for mode in ALPHA_MODES {
+                    ui.selectable_value(&mut m.alpha_mode, mode, format!("{mode:?}"));
+                }
+            });
+        if m.alpha_mode == AlphaMode::Mask {
+            ui.label("Cutoff");
+            ui.add(ranged(&mut m.alpha_cutoff, 0.01, 0.0..=1.0));
+        }
+    });
+    ui.checkbox(&mut m.double_sided, "Double-sided");
 }
 
 fn light_ui(ui: &mut egui::Ui, light: &mut Light) {
     let (kind, color, intensity) = match light {
         Light::Ambient { color, intensity } => ("Ambient", color, intensity),
-        Light::Directional { color, intensity } => ("Directional", color, intensity),
+        Light::Directional {
+            color, intensity, ..
+        } => ("Directional", color, intensity),
         Light::Point {
             color, intensity, ..
         } => ("Point", color, intensity),
+        Light::Spot {
+            color, intensity, ..
+        } => ("Spot", color, intensity),
     };
     ui.label(kind);
     ui.horizontal(|ui| {
@@ -460,11 +498,49 @@ fn light_ui(ui: &mut egui::Ui, light: &mut Light) {
         ui.label("Intensity");
         ui.add(ranged(intensity, 0.05, 0.0..=1000.0));
     });
-    if let Light::Point { range, .. } = light {
+    if let Light::Point { range, .. } | Light::Spot { range, .. } = light {
         ui.horizontal(|ui| {
             ui.label("Range");
             ui.add(ranged(range, 0.1, 0.0..=10_000.0));
         });
+    }
+    if let Light::Spot {
+        inner_angle,
+        outer_angle,
+        ..
+    } = light
+    {
+        ui.horizontal(|ui| {
+            ui.label("Cone");
+            ui.add(
+                egui::DragValue::from_get_set(|set| {
+                    if let Some(degrees) = set {
+                        *inner_angle = (degrees as f32).to_radians();
+                    }
+                    f64::from(inner_angle.to_degrees())
+                })
+                .speed(0.5)
+                .range(0.0..=89.0)
+                .suffix("°"),
+            );
+            ui.add(
+                egui::DragValue::from_get_set(|set| {
+                    if let Some(degrees) = set {
+                        *outer_angle = (degrees as f32).to_radians();
+                    }
+                    f64::from(outer_angle.to_degrees())
+                })
+                .speed(0.5)
+                .range(0.0..=89.0)
+                .suffix("°"),
+            );
+        });
+    }
+    if let Light::Directional { shadows, .. }
+    | Light::Point { shadows, .. }
+    | Light::Spot { shadows, .. } = light
+    {
+        ui.checkbox(shadows, "Shadows");
     }
 }
 

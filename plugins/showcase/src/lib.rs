@@ -59,17 +59,20 @@ impl Showcase {
             Light::Directional {
                 color: [1.0, 0.96, 0.9],
                 intensity: 0.8,
+                shadows: true,
             },
         ))?;
         let red = Light::Point {
             color: [1.0, 0.2, 0.1],
             intensity: 2.0,
             range: 5.0,
+            shadows: false,
         };
         let blue = Light::Point {
             color: [0.1, 0.3, 1.0],
             intensity: 2.0,
             range: 5.0,
+            shadows: false,
         };
         ctx.spawn((
             Name::new("red light"),

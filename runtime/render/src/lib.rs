@@ -21,7 +21,8 @@
 //! let scene = RenderScene::new(camera, &lights).with_objects(&objects).with_grid(true);
 //! let stats = renderer.render(&mut target, &scene)?;
 //! let image = target.read_image(renderer.gpu())?; // an image::RgbaImage
-//! assert_eq!((image.width(), stats.draw_calls), (320, 2)); // the cube + the grid
+//! // The cube, the sky and the grid; the sun's three shadow cascades draw the cube once each.
+//! assert_eq!((image.width(), stats.draw_calls, stats.shadow_views), (320, 3, 3));
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 //!
@@ -31,13 +32,26 @@
 //! [`SurfaceTarget::new`]; call [`SurfaceTarget::resize`] on resize and
 //! [`Renderer::render`] each frame. See `NOTES.md` at the workspace root.
 //!
+//! # What a frame does
+//! Shadow passes (the sun's cascades, shadowed spot lights, point-light cube faces), then the
+//! scene in linear HDR (physically based materials lit by the sky's image-based light and the
+//! direct lights; opaque, masked, then blended objects back to front), then exposure and tone
+//! mapping (AgX by default) into the sRGB target. MSAA (4× by default) applies to the HDR
+//! scene.
+//!
 //! # Conventions
 //! - Y up, right-handed; the camera looks down -Z in view space.
-//! - Units: metres, radians; colours are linear RGB(A) (targets are sRGB).
-//! - Clip-space depth 0..1 (wgpu), depth test `Less`, cleared to 1.
+//! - Units: metres, radians; colours are linear RGB(A) (targets are sRGB). A light of
+//!   intensity 1 lights a white diffuse surface facing it to brightness 1.
+//! - Reverse-Z: clip-space depth 1 at the near plane, 0 at infinity (perspective cameras have
+//!   no far plane); depth test `Greater`, cleared to 0.
+//! - Camera-relative: object, light and line positions are made relative to the camera on the
+//!   CPU, so precision does not depend on the distance from the world origin.
 //! - Triangles are counter-clockwise when seen from the front; back faces are culled
-//!   (except in wireframe).
+//!   (except in wireframe and for double-sided materials).
 //! - Textures: (0, 0) is the top-left of the image; OBJ texture coordinates are flipped on load.
+//!   Normal maps are tangent space with +Y up the image (glTF, Blender); tangents are
+//!   MikkTSpace, generated when a mesh has none.
 //!
 //! # Errors and events
 //! Each fallible operation has its own error enum naming the file or object at fault.
@@ -59,6 +73,8 @@ mod builtin_meshes;
 mod camera;
 /// Debug lines and their categories.
 mod debug_lines;
+/// The sky's image-based light: prefiltered specular and irradiance cubes, BRDF table.
+mod environment;
 /// Per-frame GPU data: uniforms, instances, batching, attachments (internal).
 mod frame;
 /// Frustum planes for culling.
@@ -69,9 +85,9 @@ mod gpu_context;
 mod gpu_init_error;
 /// Events (validation errors, device loss, shader failures) for the host.
 mod graphics_event;
-/// Ambient, sun and point lights.
+/// Sky light, sun, point and spot lights, and their shadow settings.
 mod light;
-/// Object material (colour, texture, shading mode).
+/// Object material (metallic-roughness, maps, alpha mode, shading mode).
 mod material;
 /// Meshes: data, procedural shapes, model files (OBJ, glTF), cache.
 pub mod mesh;
@@ -103,12 +119,18 @@ mod renderer;
 mod renderer_init_error;
 /// Shading modes.
 mod shading_mode;
+/// Shadow views (cascades, spot and point lights) and shadow maps.
+mod shadow;
+/// The sky around the scene.
+mod sky;
 /// Window surface render target.
 mod surface_target;
 /// Error of wrapping a window surface.
 mod surface_target_error;
 /// Textures: loading, mipmaps, cache, fallbacks.
 pub mod texture;
+/// Tone-mapping operators.
+mod tone_mapping;
 
 pub use asset_io::{AssetReadError, AssetWarning};
 pub use builtin_meshes::{BuiltinMeshes, BUILTIN_RINGS, BUILTIN_SEGMENTS};
@@ -120,13 +142,16 @@ pub use gpu_context::GpuContext;
 pub use gpu_init_error::GpuInitError;
 pub use graphics_event::GraphicsEvent;
 pub use image;
-pub use light::{DirectionalLight, Lights, PointLight, MAX_POINT_LIGHTS};
+pub use light::{
+    DirectionalLight, LightShadows, Lights, PointLight, SpotLight, MAX_POINT_LIGHTS,
+    MAX_SPOT_LIGHTS,
+};
 pub use material::Material;
 pub use mesh::{
     ImportSettings, InvalidMeshError, MeshData, MeshHandle, Model, ModelLoadError, ModelPart,
     ModelSource, NormalMode, PartSource, SubAsset, UpAxis, Vertex,
 };
-pub use model_material::ModelMaterial;
+pub use model_material::{AlphaMode, ModelMaterial};
 pub use offscreen::{OffscreenTarget, OFFSCREEN_FORMAT};
 pub use overlay::Overlay;
 pub use pipeline::{ShaderError, ShaderReloadError, ShaderSource};
@@ -139,7 +164,10 @@ pub use render_target::RenderTarget;
 pub use renderer::Renderer;
 pub use renderer_init_error::RendererInitError;
 pub use shading_mode::ShadingMode;
+pub use shadow::MAX_CASCADES;
+pub use sky::Sky;
 pub use surface_target::SurfaceTarget;
 pub use surface_target_error::SurfaceTargetError;
 pub use texture::{TextureHandle, TextureLoadError, TextureSource};
+pub use tone_mapping::ToneMapping;
 pub use wgpu;

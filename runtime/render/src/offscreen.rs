@@ -102,19 +102,15 @@ impl Sealed for OffscreenTarget {
         samples: u32,
     ) -> Result<Option<TargetFrame>, RenderError> {
         let overlay = self.encoded_view();
-        let attachments = Attachments::ensure(
-            &mut self.attachments,
-            gpu.device(),
-            self.size,
-            OFFSCREEN_FORMAT,
-            samples,
-        );
+        let attachments =
+            Attachments::ensure(&mut self.attachments, gpu.device(), self.size, samples);
         Ok(Some(TargetFrame {
             color: self.view.clone(),
             overlay,
             overlay_format: OFFSCREEN_FORMAT.remove_srgb_suffix(),
             depth: attachments.depth.clone(),
-            msaa: attachments.msaa.clone(),
+            hdr: attachments.hdr.clone(),
+            resolve: attachments.resolve.clone(),
             format: OFFSCREEN_FORMAT,
             samples,
             surface_texture: None,

@@ -3,6 +3,8 @@
 use std::path::PathBuf;
 
 use crate::debug_lines::DebugCategories;
+use crate::sky::Sky;
+use crate::tone_mapping::ToneMapping;
 
 /// Renderer settings. Change them with [`crate::Renderer::set_settings`]; targets pick up a
 /// new MSAA count on their next frame.
@@ -12,8 +14,41 @@ pub struct RenderSettings {
     /// where the adapter cannot multisample the target format. Higher costs fill rate and
     /// memory; golden-image tests use 1 so output is identical across rasterisers.
     pub msaa_samples: u32,
-    /// Linear RGBA colour the targets are cleared to. Default dark grey-blue.
+    /// Linear RGBA colour behind the scene when `sky_background` is off. Default dark
+    /// grey-blue.
     pub clear_color: [f64; 4],
+    /// Draw the sky behind the scene (else `clear_color`). Default true.
+    pub sky_background: bool,
+    /// The sky: image-based ambient light and background. Default [`Sky::default`].
+    pub sky: Sky,
+    /// Exposure compensation in stops: the HDR frame is scaled by 2^`exposure_ev` before tone
+    /// mapping. Default 0. +1 doubles the brightness; too high washes highlights out to
+    /// white, too low crushes shadows to black.
+    pub exposure_ev: f32,
+    /// Operator from HDR to the display. Default [`ToneMapping::AgX`].
+    pub tone_mapping: ToneMapping,
+    /// Cascades of the directional light's shadow map, 1..=4. Default 3. More cascades keep
+    /// shadows sharp further away at one extra shadow pass each.
+    pub shadow_cascades: u32,
+    /// Side of each directional shadow cascade, texels. Default 2048. Higher is sharper and
+    /// costs fill rate and memory (4 bytes per texel per cascade).
+    pub shadow_resolution: u32,
+    /// Distance from the camera, metres, that directional shadows cover (split between the
+    /// cascades). Default 60. Longer spreads the texels thinner.
+    pub shadow_distance: f32,
+    /// How cascade splits are placed, 0 (uniform) ..= 1 (logarithmic). Default 0.75: most
+    /// texels near the camera.
+    pub shadow_cascade_lambda: f32,
+    /// Side of each point-light cube face and spot-light shadow map, texels. Default 1024.
+    pub local_shadow_resolution: u32,
+    /// Most spot lights that cast shadows in one frame (the first ones with shadows on).
+    /// Default 4.
+    pub max_spot_shadows: u32,
+    /// Most point lights that cast shadows in one frame (six passes each). Default 2.
+    pub max_point_shadows: u32,
+    /// Radius of the shadow filter (percentage-closer filtering), texels. Default 1.5.
+    /// Larger is softer and blurs small shadows away; 0 gives hard, aliased edges.
+    pub shadow_filter_radius: f32,
     /// Batch objects by (mesh, shading, texture) into instanced draws. Default true. Off
     /// issues one draw per object (for comparison only: far slower with many objects).
     pub instancing: bool,
@@ -42,6 +77,18 @@ impl Default for RenderSettings {
         Self {
             msaa_samples: 4,
             clear_color: [0.05, 0.06, 0.08, 1.0],
+            sky_background: true,
+            sky: Sky::default(),
+            exposure_ev: 0.0,
+            tone_mapping: ToneMapping::AgX,
+            shadow_cascades: 3,
+            shadow_resolution: 2048,
+            shadow_distance: 60.0,
+            shadow_cascade_lambda: 0.75,
+            local_shadow_resolution: 1024,
+            max_spot_shadows: 4,
+            max_point_shadows: 2,
+            shadow_filter_radius: 1.5,
             instancing: true,
             frustum_culling: true,
             grid: true,
@@ -72,6 +119,33 @@ impl RenderSettings {
         self
     }
 
+    /// Sets the exposure compensation, stops.
+    #[must_use]
+    pub fn with_exposure(mut self, exposure_ev: f32) -> Self {
+        self.exposure_ev = exposure_ev;
+        self
+    }
+
+    /// Sets the tone-mapping operator.
+    #[must_use]
+    pub fn with_tone_mapping(mut self, tone_mapping: ToneMapping) -> Self {
+        self.tone_mapping = tone_mapping;
+        self
+    }
+
+    /// Sets the sky.
+    #[must_use]
+    pub fn with_sky(mut self, sky: Sky) -> Self {
+        self.sky = sky;
+        self
+    }
+
+    /// The number of directional cascades used: the setting, clamped to 1..=4.
+    #[must_use]
+    pub fn cascades(&self) -> usize {
+        self.shadow_cascades.clamp(1, crate::MAX_CASCADES as u32) as usize
+    }
+
     /// Sets the folder shaders are read from.
     #[must_use]
     pub fn with_shader_dir(mut self, dir: impl Into<PathBuf>) -> Self {
@@ -99,6 +173,27 @@ mod tests {
             (DebugCategories::ALL, 1.5)
         );
         assert_eq!(d.shader_dir, None);
+        assert!(d.sky_background);
+        assert_eq!(d.sky, Sky::default());
+        assert_eq!((d.exposure_ev, d.tone_mapping), (0.0, ToneMapping::AgX));
+        assert_eq!(
+            (
+                d.shadow_cascades,
+                d.shadow_resolution,
+                d.shadow_distance,
+                d.shadow_cascade_lambda
+            ),
+            (3, 2048, 60.0, 0.75)
+        );
+        assert_eq!(
+            (
+                d.local_shadow_resolution,
+                d.max_spot_shadows,
+                d.max_point_shadows,
+                d.shadow_filter_radius
+            ),
+            (1024, 4, 2, 1.5)
+        );
         assert_eq!(RenderSettings::deterministic().msaa_samples, 1);
     }
 }

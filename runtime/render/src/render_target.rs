@@ -5,7 +5,8 @@ pub(crate) mod sealed {
     use crate::gpu_context::GpuContext;
     use crate::render_error::RenderError;
 
-    /// Views of one frame of a target.
+    /// Views of one frame of a target: the scene is drawn into `hdr` (resolved into
+    /// `resolve` with MSAA) with `depth`, then tone-mapped into `color`.
     #[derive(Debug)]
     pub struct TargetFrame {
         pub(crate) color: wgpu::TextureView,
@@ -15,7 +16,8 @@ pub(crate) mod sealed {
         pub(crate) overlay: wgpu::TextureView,
         pub(crate) overlay_format: wgpu::TextureFormat,
         pub(crate) depth: wgpu::TextureView,
-        pub(crate) msaa: Option<wgpu::TextureView>,
+        pub(crate) hdr: wgpu::TextureView,
+        pub(crate) resolve: Option<wgpu::TextureView>,
         pub(crate) format: wgpu::TextureFormat,
         pub(crate) samples: u32,
         pub(crate) surface_texture: Option<wgpu::SurfaceTexture>,

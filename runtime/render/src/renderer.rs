@@ -1,19 +1,24 @@
 //! [`Renderer`]: the one entry point: owns the device, assets and pipelines, and draws a
 //! [`RenderScene`] into a [`RenderTarget`].
 //!
-//! `render` runs named stages: `prepare` (uniforms, culling, batching, uploads; timed) →
-//! acquire the target frame → `encode` (one render pass: meshes, grid, debug lines) →
-//! submit → present. Asset loading lives in `renderer/assets.rs`, pass recording in
-//! `renderer/encode.rs`.
+//! `render` runs named stages: `prepare` (shadow views, uniforms, culling and batching for
+//! every view, uploads; timed) → acquire the target frame → `encode_shadows` (one depth pass
+//! per shadow view) → `encode_scene` (the HDR pass: opaque, sky, grid, blended back to front,
+//! debug lines) → `encode_tonemap` (exposure, tone mapping, sRGB into the target) → overlay →
+//! submit → present. Each stage has its file in `renderer/`; asset loading is in
+//! `renderer/assets.rs`, the bind groups that change with buffers and maps in
+//! `renderer/bindings.rs`.
 
 mod assets;
+mod bindings;
 mod encode;
-
-use std::time::Instant;
+mod prepare;
+mod shadow_pass;
+mod tonemap_pass;
 
 use crate::builtin_meshes::{BuiltinMeshes, BUILTIN_RINGS, BUILTIN_SEGMENTS};
-use crate::frame::{Batcher, FrameUniforms, GrowableBuffer, LineRaw, MeshBounds};
-use crate::frustum::Frustum;
+use crate::environment::EnvironmentMaps;
+use crate::frame::{Batcher, FrameUniforms, GrowableBuffer, LineRaw};
 use crate::gpu_context::GpuContext;
 use crate::graphics_event::GraphicsEvent;
 use crate::mesh::{MeshCache, MeshData};
@@ -24,7 +29,10 @@ use crate::render_settings::RenderSettings;
 use crate::render_stats::RenderStats;
 use crate::render_target::RenderTarget;
 use crate::renderer_init_error::RendererInitError;
+use crate::shadow::{ShadowMaps, ShadowPlan};
 use crate::texture::TextureCache;
+
+use bindings::Bindings;
 
 /// The renderer. One per device; not tied to a window: render into any number of
 /// [`crate::OffscreenTarget`]s and [`crate::SurfaceTarget`]s.
@@ -37,10 +45,18 @@ pub struct Renderer {
     meshes: MeshCache,
     builtin: BuiltinMeshes,
     frame_buffer: wgpu::Buffer,
-    frame_bind_group: wgpu::BindGroup,
-    instance_buffer: GrowableBuffer,
+    /// Every object some view sees (storage).
+    object_buffer: GrowableBuffer,
+    /// Object slots per instance, for every view's batches (vertex, per instance).
+    index_buffer: GrowableBuffer,
+    /// One view-projection per shadow pass (uniform, dynamic offsets).
+    shadow_view_buffer: GrowableBuffer,
     line_buffer: GrowableBuffer,
+    shadow_maps: ShadowMaps,
+    environment: EnvironmentMaps,
+    bindings: Bindings,
     batcher: Batcher,
+    shadow_plan: ShadowPlan,
     lines: Vec<LineRaw>,
     stats: RenderStats,
     msaa_warned: bool,
@@ -60,24 +76,21 @@ impl Renderer {
             .shader_dir
             .clone()
             .map_or_else(ShaderSource::embedded, ShaderSource::from_dir);
-        let (pipelines, warnings) = PipelineLibrary::new(&device, source)?;
+        let (pipelines, warnings) = PipelineLibrary::new(&device, source.clone())?;
         for warning in warnings {
             gpu.events().push(shader_event(&warning));
         }
-        let textures = TextureCache::new(&device, gpu.queue(), &pipelines.layouts().material);
+        let (environment, warning) =
+            EnvironmentMaps::bake(&device, gpu.queue(), &source, &settings.sky)?;
+        if let Some(warning) = warning {
+            gpu.events().push(shader_event(&warning));
+        }
+        let textures = TextureCache::new(&device, gpu.queue());
         let frame_buffer = device.create_buffer(&wgpu::BufferDescriptor {
             label: Some("onyx frame uniforms"),
             size: size_of::<FrameUniforms>() as u64,
             usage: wgpu::BufferUsages::UNIFORM | wgpu::BufferUsages::COPY_DST,
             mapped_at_creation: false,
-        });
-        let frame_bind_group = device.create_bind_group(&wgpu::BindGroupDescriptor {
-            label: Some("onyx frame"),
-            layout: &pipelines.layouts().frame,
-            entries: &[wgpu::BindGroupEntry {
-                binding: 0,
-                resource: frame_buffer.as_entire_binding(),
-            }],
         });
         let mut meshes = MeshCache::default();
         let storage = &pipelines.layouts().mesh_storage;
@@ -103,10 +116,24 @@ impl Renderer {
                 "onyx cylinder",
             ),
         };
-        let instance_buffer =
+        let object_buffer =
+            GrowableBuffer::new(&device, wgpu::BufferUsages::STORAGE, "onyx objects");
+        let index_buffer =
             GrowableBuffer::new(&device, wgpu::BufferUsages::VERTEX, "onyx instances");
+        let shadow_view_buffer =
+            GrowableBuffer::new(&device, wgpu::BufferUsages::UNIFORM, "onyx shadow views");
         let line_buffer =
             GrowableBuffer::new(&device, wgpu::BufferUsages::VERTEX, "onyx debug lines");
+        let shadow_maps = ShadowMaps::new(&device);
+        let bindings = Bindings::new(
+            &device,
+            pipelines.layouts(),
+            &frame_buffer,
+            object_buffer.buffer(),
+            shadow_view_buffer.buffer(),
+            &shadow_maps,
+            &environment,
+        );
         tracing::info!(msaa = settings.msaa_samples, shader_dir = ?settings.shader_dir, "renderer ready");
         Ok(Self {
             gpu,
@@ -116,10 +143,15 @@ impl Renderer {
             meshes,
             builtin,
             frame_buffer,
-            frame_bind_group,
-            instance_buffer,
+            object_buffer,
+            index_buffer,
+            shadow_view_buffer,
             line_buffer,
+            shadow_maps,
+            environment,
+            bindings,
             batcher: Batcher::default(),
+            shadow_plan: ShadowPlan::default(),
             lines: Vec::new(),
             stats: RenderStats::default(),
             msaa_warned: false,
@@ -146,24 +178,57 @@ impl Renderer {
         &self.settings
     }
 
-    /// Replaces the settings. A changed `shader_dir` reloads the shaders from it.
+    /// Replaces the settings. A changed `shader_dir` reloads the shaders from it; a changed
+    /// `sky` bakes its image-based light again.
     ///
     /// # Errors
     /// [`ShaderReloadError`] when the shader folder changed and some shaders failed there.
     pub fn set_settings(&mut self, settings: RenderSettings) -> Result<(), ShaderReloadError> {
         let dir_changed = settings.shader_dir != self.settings.shader_dir;
+        let sky_changed = settings.sky != self.environment.sky;
         self.settings = settings;
         self.msaa_warned = false;
+        if sky_changed {
+            self.rebake_sky();
+        }
         if dir_changed {
-            let source = self
-                .settings
-                .shader_dir
-                .clone()
-                .map_or_else(ShaderSource::embedded, ShaderSource::from_dir);
+            let source = self.shader_source();
             self.pipelines.set_source(source);
             return self.reload_shaders();
         }
         Ok(())
+    }
+
+    fn shader_source(&self) -> ShaderSource {
+        self.settings
+            .shader_dir
+            .clone()
+            .map_or_else(ShaderSource::embedded, ShaderSource::from_dir)
+    }
+
+    /// Bakes the sky's maps again (new sky, or its shader reloaded).
+    fn rebake_sky(&mut self) {
+        let source = self.shader_source();
+        match EnvironmentMaps::bake(
+            self.gpu.device(),
+            self.gpu.queue(),
+            &source,
+            &self.settings.sky,
+        ) {
+            Ok((environment, warning)) => {
+                if let Some(warning) = warning {
+                    self.gpu.events().push(shader_event(&warning));
+                }
+                self.environment = environment;
+                self.bindings.rebuild_lighting(
+                    self.gpu.device(),
+                    self.pipelines.layouts(),
+                    &self.shadow_maps,
+                    &self.environment,
+                );
+            }
+            Err(error) => self.gpu.events().push(shader_event(&error)),
+        }
     }
 
     /// Takes the events queued since the last call (validation errors, device loss, shader
@@ -228,8 +293,8 @@ impl Renderer {
             };
             return Ok(self.stats);
         }
-        let samples = self.sample_count(target.format());
-        let mut stats = self.prepare(scene, size);
+        let samples = self.sample_count();
+        let mut stats = self.prepare(scene, size, !target.format().is_srgb());
         let Some(frame) = target.begin_frame(&self.gpu, samples)? else {
             self.stats = RenderStats {
                 skipped: true,
@@ -243,7 +308,9 @@ impl Renderer {
                 .create_command_encoder(&wgpu::CommandEncoderDescriptor {
                     label: Some("onyx frame"),
                 });
-        stats.draw_calls = self.encode(&mut encoder, &frame, scene.grid);
+        stats.shadow_draw_calls = self.encode_shadows(&mut encoder);
+        stats.draw_calls = self.encode_scene(&mut encoder, &frame, scene.grid);
+        self.encode_tonemap(&mut encoder, &frame);
         overlay(&mut crate::Overlay {
             device: self.gpu.device(),
             queue: self.gpu.queue(),
@@ -258,79 +325,9 @@ impl Renderer {
         Ok(stats)
     }
 
-    /// Stage 1: frame uniforms, culling, batching, instance and line uploads.
-    fn prepare(&mut self, scene: &RenderScene<'_>, size: (u32, u32)) -> RenderStats {
-        let start = Instant::now();
-        let aspect = size.0 as f32 / size.1 as f32;
-        let view_proj = scene.camera.view_projection(aspect);
-        let uniforms =
-            FrameUniforms::new(&scene.camera, view_proj, scene.lights, &self.settings, size);
-        self.gpu
-            .queue()
-            .write_buffer(&self.frame_buffer, 0, bytemuck::bytes_of(&uniforms));
-
-        let frustum = self
-            .settings
-            .frustum_culling
-            .then(|| Frustum::from_view_projection(&view_proj));
-        let meshes = &self.meshes;
-        let counts = self.batcher.prepare(
-            scene.objects,
-            self.textures.checker(),
-            frustum.as_ref(),
-            |handle| {
-                meshes.get(handle).map(|m| MeshBounds {
-                    center: m.bounds_center,
-                    radius: m.bounds_radius,
-                })
-            },
-            self.settings.instancing,
-        );
-        self.instance_buffer.write(
-            self.gpu.device(),
-            self.gpu.queue(),
-            bytemuck::cast_slice(self.batcher.instances()),
-        );
-
-        self.lines.clear();
-        let categories = self.settings.debug_categories;
-        let width = self.settings.debug_line_width;
-        self.lines.extend(
-            scene
-                .debug_lines
-                .iter()
-                .filter(|line| categories.intersects(line.category))
-                .map(|line| LineRaw::new(line, width)),
-        );
-        self.line_buffer.write(
-            self.gpu.device(),
-            self.gpu.queue(),
-            bytemuck::cast_slice(&self.lines),
-        );
-
-        let triangles = self
-            .batcher
-            .batches()
-            .iter()
-            .filter_map(|batch| {
-                let mesh = self.meshes.get(batch.key.mesh)?;
-                Some(u64::from(mesh.index_count / 3) * u64::from(batch.instance_count))
-            })
-            .sum();
-        RenderStats {
-            draw_calls: 0,
-            triangles,
-            instances: counts.visible,
-            culled: counts.culled,
-            batches: self.batcher.batches().len() as u32,
-            debug_lines: self.lines.len() as u32,
-            cpu_prepare_time: start.elapsed(),
-            skipped: false,
-        }
-    }
-
-    /// MSAA samples for a target format: the setting, clamped to what the adapter offers.
-    fn sample_count(&mut self, format: wgpu::TextureFormat) -> u32 {
+    /// MSAA samples of the HDR scene: the setting, clamped to what the adapter offers.
+    fn sample_count(&mut self) -> u32 {
+        let format = crate::frame::HDR_FORMAT;
         let requested = self.settings.msaa_samples.max(1);
         let samples = self.gpu.supported_sample_count(format, requested);
         if samples != requested && !self.msaa_warned {

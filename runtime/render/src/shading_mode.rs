@@ -3,11 +3,13 @@
 /// How an object is shaded. Each mode is one WGSL file in the workspace `shaders/` folder.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash, PartialOrd, Ord)]
 pub enum ShadingMode {
-    /// The material colour, flat, ignoring lights (`unlit.wgsl`).
+    /// The base colour × base colour map, ignoring lights (`unlit.wgsl`).
     Unlit,
-    /// Lit by ambient, sun and point lights, untextured (`lit_low.wgsl`).
+    /// Fast lighting: Lambert and a Blinn-Phong highlight from the direct lights plus flat
+    /// sky light, no maps and no shadows (`lit_low.wgsl`).
     LitLow,
-    /// Lit, albedo = material colour × texture (`lit.wgsl`). The default.
+    /// Physically based (Cook-Torrance: GGX, Smith, Schlick) with every map, image-based sky
+    /// light and shadows (`lit.wgsl`). The default.
     #[default]
     Lit,
     /// World-space normals as colour (`normal.wgsl`).
@@ -39,9 +41,25 @@ impl ShadingMode {
         }
     }
 
-    /// Whether this mode samples the material's texture.
+    /// Whether this mode samples the material's maps.
     #[must_use]
     pub const fn uses_texture(self) -> bool {
-        matches!(self, ShadingMode::Lit)
+        matches!(self, ShadingMode::Lit | ShadingMode::Unlit)
+    }
+
+    /// Whether this mode honours the material's alpha mode (mask, blend); the others draw
+    /// everything opaque.
+    #[must_use]
+    pub const fn uses_alpha(self) -> bool {
+        matches!(
+            self,
+            ShadingMode::Lit | ShadingMode::Unlit | ShadingMode::LitLow
+        )
+    }
+
+    /// Whether objects in this mode cast shadows.
+    #[must_use]
+    pub const fn casts_shadows(self) -> bool {
+        !matches!(self, ShadingMode::Wireframe)
     }
 }

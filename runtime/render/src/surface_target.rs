@@ -203,13 +203,7 @@ impl Sealed for SurfaceTarget {
             self.needs_configure = true;
         }
         let size = (self.config.width, self.config.height);
-        let attachments = Attachments::ensure(
-            &mut self.attachments,
-            gpu.device(),
-            size,
-            self.config.format,
-            samples,
-        );
+        let attachments = Attachments::ensure(&mut self.attachments, gpu.device(), size, samples);
         let color = texture
             .texture
             .create_view(&wgpu::TextureViewDescriptor::default());
@@ -228,7 +222,8 @@ impl Sealed for SurfaceTarget {
             overlay,
             overlay_format,
             depth: attachments.depth.clone(),
-            msaa: attachments.msaa.clone(),
+            hdr: attachments.hdr.clone(),
+            resolve: attachments.resolve.clone(),
             format: self.config.format,
             samples,
             surface_texture: Some(texture),

@@ -204,6 +204,7 @@ fn point_lights() {
                 .with_intensity(3.0)
                 .with_range(5.0),
         ],
+        spots: Vec::new(),
     };
     let scene = RenderScene::new(camera(), &lights).with_objects(&objects);
     common::check_golden(

@@ -318,8 +318,8 @@ fn diagnostics_count_the_triangles_and_draw_calls_of_the_last_image() {
     assert_eq!(d.triangles, 12, "{d:?}");
     assert_eq!(d.instances, 1, "{d:?}");
     assert_eq!(
-        d.draw_calls, 2,
-        "the cube and the physics lines, no grid: {d:?}"
+        d.draw_calls, 3,
+        "the cube, the sky and the physics lines, no grid: {d:?}"
     );
     // The renderer's start-up lines (adapter, backend, driver) are in the console.
     let lines = onyx_runtime::console::console_log().since(0);

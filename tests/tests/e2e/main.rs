@@ -25,3 +25,4 @@ mod reload_images;
 mod render;
 mod scenes;
 mod schema_changes;
+mod shading;

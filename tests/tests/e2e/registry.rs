@@ -40,7 +40,11 @@ fn sample(id: BuiltinId, ctx: &mut Ctx, parent: Entity) -> BuiltinValue {
             let texture = ctx.load_texture("textures/crate.png").unwrap();
             let material = Material::color(0.1, 0.6, 0.9)
                 .with_texture(texture)
-                .with_shading(ShadingMode::Wireframe);
+                .with_shading(ShadingMode::Wireframe)
+                .with_metallic_roughness(0.75, 0.2)
+                .with_emissive([0.5, 2.0, 0.0])
+                .with_alpha_mode(onyx_plugin_api::AlphaMode::Mask, 0.3)
+                .with_double_sided(true);
             let mut renderer = MeshRenderer::new(mesh).with_material(material);
             renderer.visible = false;
             renderer.into()
@@ -56,6 +60,7 @@ fn sample(id: BuiltinId, ctx: &mut Ctx, parent: Entity) -> BuiltinValue {
             color: [1.0, 0.5, 0.25],
             intensity: 3.5,
             range: 12.0,
+            shadows: true,
         }
         .into(),
         BuiltinId::RigidBody => {

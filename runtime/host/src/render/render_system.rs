@@ -4,13 +4,13 @@ use std::collections::HashMap;
 
 use onyx_plugin_api::glam::{Affine3A, Mat4, Vec3};
 use onyx_plugin_api::{
-    Event, GraphicsEvent, Light, MeshId, MeshRenderer, ShadingMode, TextureId, Transform,
+    AlphaMode, Event, GraphicsEvent, Light, MeshId, MeshRenderer, ShadingMode, TextureId, Transform,
 };
 use onyx_render::mesh::{Model, ModelPart};
 use onyx_render::{
-    DebugCategories, DebugLine, DirectionalLight, DrawObject, Lights, PointLight, RenderError,
-    RenderScene, RenderSettings, RenderStats, RenderTarget, Renderer, RendererInitError,
-    TextureHandle,
+    DebugCategories, DebugLine, DirectionalLight, DrawObject, LightShadows, Lights, PointLight,
+    RenderError, RenderScene, RenderSettings, RenderStats, RenderTarget, Renderer,
+    RendererInitError, SpotLight, TextureHandle,
 };
 
 use super::previous_pose::{interpolate, PreviousPose};
@@ -18,6 +18,39 @@ use super::{ShaderWatcher, ViewState};
 use crate::assets::AssetRegistry;
 use crate::physics::PhysicsSystem;
 use crate::world::WorldState;
+
+/// The material a part of an entity's mesh is drawn with: a built-in shape takes the
+/// entity's material whole; a model part keeps its file's material, with the entity's colour
+/// multiplying it, its emission added, its alpha mode (when not opaque) replacing it and its
+/// double-sidedness added (see [`onyx_plugin_api::Material`]).
+fn part_material(
+    entity: &onyx_plugin_api::Material,
+    part: &onyx_render::Material,
+    builtin: bool,
+) -> onyx_render::Material {
+    let alpha_mode = match entity.alpha_mode {
+        AlphaMode::Opaque => None,
+        AlphaMode::Mask => Some(onyx_render::AlphaMode::Mask {
+            cutoff: entity.alpha_cutoff,
+        }),
+        AlphaMode::Blend => Some(onyx_render::AlphaMode::Blend),
+    };
+    let [r, g, b, a] = entity.color;
+    let pc = part.color;
+    let mut material = onyx_render::Material {
+        color: [r * pc[0], g * pc[1], b * pc[2], a * pc[3]],
+        emissive: std::array::from_fn(|i| part.emissive[i] + entity.emissive[i]),
+        alpha_mode: alpha_mode.unwrap_or(part.alpha_mode),
+        double_sided: part.double_sided || entity.double_sided,
+        ..*part
+    };
+    if builtin {
+        material.metallic = entity.metallic;
+        material.roughness = entity.roughness;
+        material.alpha_mode = alpha_mode.unwrap_or(onyx_render::AlphaMode::Opaque);
+    }
+    material
+}
 
 /// What a frame is drawn from: the world (poses from its scene graph), how it is looked at,
 /// this frame's debug lines, physics (for its debug lines) and the interpolation factor
@@ -285,19 +318,12 @@ impl RenderSystem {
                 continue;
             }
             let model = &self.models[&renderer.mesh];
-            let [r, g, b, a] = renderer.material.color;
+            let builtin = MeshId::BUILTIN.iter().any(|(id, _)| *id == renderer.mesh);
+            let shading = to_render_shading(shading_override.unwrap_or(renderer.material.shading));
             for part in &model.parts {
-                let pc = part.material.color;
-                let mut material = onyx_render::Material {
-                    color: [r * pc[0], g * pc[1], b * pc[2], a * pc[3]],
-                    texture: texture.or(part.material.texture),
-                    shading: to_render_shading(
-                        shading_override.unwrap_or(renderer.material.shading),
-                    ),
-                };
-                if material.shading != onyx_render::ShadingMode::Lit {
-                    material.texture = None;
-                }
+                let mut material = part_material(&renderer.material, &part.material, builtin);
+                material.texture = texture.or(part.material.texture);
+                material.shading = shading;
                 self.objects.push(DrawObject::new(
                     part.mesh,
                     material,
@@ -346,46 +372,68 @@ impl RenderSystem {
         }
     }
 
-    /// The scene's lights at their world poses (directional lights shine along their local
-    /// -Z, point lights sit at their origin).
+    /// The scene's lights at their world poses (directional and spot lights shine along
+    /// their local -Z, point and spot lights sit at their origin). An ambient light needs no
+    /// [`Transform`]; the others without one sit at the origin, unrotated.
     fn lights(world: &WorldState) -> Lights {
-        let mut lights = Lights {
-            ambient: Vec3::ZERO,
-            sun: None,
-            points: Vec::new(),
-        };
+        let mut lights = Lights::none();
         let mut any = false;
         for (e, light, t) in world
             .ecs
-            .query::<(hecs::Entity, &Light, &Transform)>()
+            .query::<(hecs::Entity, &Light, Option<&Transform>)>()
             .iter()
         {
             any = true;
-            let pose = world.hierarchy.world_of(e, t);
+            let pose = world
+                .hierarchy
+                .world_of(e, t.unwrap_or(&Transform::IDENTITY));
+            let forward = pose
+                .transform_vector3(Vec3::NEG_Z)
+                .normalize_or(Vec3::NEG_Z);
             match *light {
                 Light::Ambient { color, intensity } => {
                     lights.ambient += Vec3::from(color) * intensity;
                 }
-                Light::Directional { color, intensity } => {
+                Light::Directional {
+                    color,
+                    intensity,
+                    shadows,
+                } => {
                     if lights.sun.is_none() {
-                        lights.sun = Some(DirectionalLight {
-                            direction: pose
-                                .transform_vector3(Vec3::NEG_Z)
-                                .normalize_or(Vec3::NEG_Z),
-                            color: Vec3::from(color),
-                            intensity,
-                        });
+                        lights.sun = Some(
+                            DirectionalLight::new(forward)
+                                .with_color(Vec3::from(color))
+                                .with_intensity(intensity)
+                                .with_shadows(LightShadows::directional().with_enabled(shadows)),
+                        );
                     }
                 }
                 Light::Point {
                     color,
                     intensity,
                     range,
+                    shadows,
                 } => lights.points.push(
                     PointLight::new(pose.translation.into())
                         .with_color(Vec3::from(color))
                         .with_intensity(intensity)
-                        .with_range(range),
+                        .with_range(range)
+                        .with_shadows(LightShadows::local().with_enabled(shadows)),
+                ),
+                Light::Spot {
+                    color,
+                    intensity,
+                    range,
+                    inner_angle,
+                    outer_angle,
+                    shadows,
+                } => lights.spots.push(
+                    SpotLight::new(pose.translation.into(), forward)
+                        .with_color(Vec3::from(color))
+                        .with_intensity(intensity)
+                        .with_range(range)
+                        .with_cone(inner_angle, outer_angle)
+                        .with_shadows(LightShadows::local().with_enabled(shadows)),
                 ),
             }
         }

@@ -31,6 +31,9 @@ pub struct WindowOptions {
     pub target_fps: f64,
     /// Wait for the display's refresh before presenting.
     pub vsync: bool,
+    /// MSAA samples per pixel of the window's scene: 1 (off) or 4. Default 4 (the renderer
+    /// falls back to 1, with a warning, where the adapter cannot).
+    pub msaa_samples: u32,
 }
 
 impl Default for WindowOptions {
@@ -41,6 +44,7 @@ impl Default for WindowOptions {
             frames: None,
             target_fps: 60.0,
             vsync: true,
+            msaa_samples: 4,
         }
     }
 }
@@ -63,7 +67,11 @@ struct WindowGraphics {
     target: SurfaceTarget,
 }
 
-fn window_graphics(window: Arc<Window>, vsync: bool) -> Result<WindowGraphics, String> {
+fn window_graphics(
+    window: Arc<Window>,
+    vsync: bool,
+    msaa_samples: u32,
+) -> Result<WindowGraphics, String> {
     let size = window.inner_size();
     let instance = GpuContext::create_instance();
     let surface = instance
@@ -72,6 +80,7 @@ fn window_graphics(window: Arc<Window>, vsync: bool) -> Result<WindowGraphics, S
     let gpu = GpuContext::from_instance(instance, Some(&surface)).map_err(|e| e.to_string())?;
     let settings = RenderSettings {
         shader_dir: crate::render::shader_dir(),
+        msaa_samples,
         ..RenderSettings::default()
     };
     let renderer = Renderer::new(gpu, settings).map_err(|e| e.to_string())?;
@@ -188,7 +197,11 @@ impl ApplicationHandler for App<'_> {
         match event_loop.create_window(attributes) {
             Ok(window) => {
                 let window = Arc::new(window);
-                match window_graphics(window.clone(), self.options.vsync) {
+                match window_graphics(
+                    window.clone(),
+                    self.options.vsync,
+                    self.options.msaa_samples,
+                ) {
                     Ok(graphics) => {
                         let info = graphics.system.renderer().gpu().adapter_info();
                         tracing::info!(adapter = %info.name, backend = ?info.backend, "drawing into the window");

@@ -28,8 +28,15 @@ impl GrowableBuffer {
         }
     }
 
-    /// Writes `bytes` at offset 0, growing the buffer first if needed.
-    pub(crate) fn write(&mut self, device: &wgpu::Device, queue: &wgpu::Queue, bytes: &[u8]) {
+    /// Writes `bytes` at offset 0, growing the buffer first if needed; `true` when it grew (a
+    /// new buffer: bind groups naming it must be rebuilt).
+    pub(crate) fn write(
+        &mut self,
+        device: &wgpu::Device,
+        queue: &wgpu::Queue,
+        bytes: &[u8],
+    ) -> bool {
+        let mut grew = false;
         let needed = bytes.len() as u64;
         if needed > self.capacity {
             self.capacity = needed.next_power_of_two().max(MIN_CAPACITY);
@@ -39,10 +46,12 @@ impl GrowableBuffer {
                 "growing GPU buffer"
             );
             self.buffer = create(device, self.capacity, self.usage, self.label);
+            grew = true;
         }
         if !bytes.is_empty() {
             queue.write_buffer(&self.buffer, 0, bytes);
         }
+        grew
     }
 
     pub(crate) fn buffer(&self) -> &wgpu::Buffer {

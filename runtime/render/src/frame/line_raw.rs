@@ -1,4 +1,6 @@
-//! [`LineRaw`]: one debug line on the GPU (`LineIn` in `debug_lines.wgsl`).
+//! [`LineRaw`]: one debug line on the GPU (`LineIn` in `debug_lines.wgsl`), camera-relative.
+
+use glam::Vec3;
 
 use crate::debug_lines::DebugLine;
 
@@ -13,11 +15,12 @@ pub(crate) struct LineRaw {
 }
 
 impl LineRaw {
-    pub(crate) fn new(line: &DebugLine, width_px: f32) -> Self {
+    /// `line` with its ends made relative to `origin` (the camera position).
+    pub(crate) fn new(line: &DebugLine, width_px: f32, origin: Vec3) -> Self {
         Self {
-            start: line.start.to_array(),
+            start: (line.start - origin).to_array(),
             width_px,
-            end: line.end.to_array(),
+            end: (line.end - origin).to_array(),
             color: line.color,
         }
     }

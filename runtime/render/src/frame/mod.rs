@@ -1,23 +1,28 @@
-//! Per-frame data: GPU layouts of uniforms and instances, reusable buffers, batching and
-//! the depth / MSAA attachments of a target.
+//! Per-frame data: GPU layouts of uniforms and objects, reusable buffers, culling and
+//! batching for every view, and the HDR / depth / MSAA attachments of a target.
 //!
 //! - `frame_uniforms`: [`FrameUniforms`], the uniform block every shader reads.
-//! - `instance_raw`: [`InstanceRaw`], one object's transform and colour on the GPU.
+//! - `object_raw`: [`ObjectRaw`], one object's camera-relative transform and material factors.
+//! - `shadow_view_raw`: [`ShadowViewRaw`], one shadow pass's view-projection.
 //! - `line_raw`: [`LineRaw`], one debug line on the GPU.
 //! - `growable_buffer`: a GPU buffer reused across frames, grown geometrically.
-//! - `batcher`: culls objects and groups them into instanced batches.
-//! - `attachments`: depth and MSAA textures sized to a target.
+//! - `batch_key`: what objects are grouped by, in camera and shadow passes.
+//! - `batcher`: culls objects for every view and groups them into instanced batches.
+//! - `attachments`: HDR colour, depth and MSAA textures sized to a target.
 
 mod attachments;
+mod batch_key;
 mod batcher;
 mod frame_uniforms;
 mod growable_buffer;
-mod instance_raw;
 mod line_raw;
+mod object_raw;
+mod shadow_view_raw;
 
-pub(crate) use attachments::Attachments;
-pub(crate) use batcher::{BatchKey, Batcher, MeshBounds};
-pub(crate) use frame_uniforms::FrameUniforms;
+pub(crate) use attachments::{Attachments, HDR_FORMAT};
+pub(crate) use batch_key::{AlphaClass, BatchKey, MaterialMaps};
+pub(crate) use batcher::{Batcher, FrameViews, MeshBounds};
+pub(crate) use frame_uniforms::{FrameInputs, FrameUniforms};
 pub(crate) use growable_buffer::GrowableBuffer;
-pub(crate) use instance_raw::InstanceRaw;
 pub(crate) use line_raw::LineRaw;
+pub(crate) use shadow_view_raw::{ShadowViewRaw, SHADOW_VIEW_STRIDE};

@@ -16,7 +16,7 @@ pub(crate) struct MeshCache {
 }
 
 impl MeshCache {
-    /// Uploads a valid mesh.
+    /// Uploads a valid mesh, generating its tangents first when it has none.
     pub(crate) fn add(
         &mut self,
         device: &wgpu::Device,
@@ -25,8 +25,14 @@ impl MeshCache {
         label: &str,
     ) -> MeshHandle {
         let handle = MeshHandle(self.meshes.len() as u32);
-        self.meshes
-            .push(GpuMesh::upload(device, storage_layout, data, label));
+        let upload = if data.has_tangents() {
+            GpuMesh::upload(device, storage_layout, data, label)
+        } else {
+            let mut with_tangents = data.clone();
+            with_tangents.generate_tangents();
+            GpuMesh::upload(device, storage_layout, &with_tangents, label)
+        };
+        self.meshes.push(upload);
         handle
     }
 

@@ -1,6 +1,7 @@
 //! Meshes: CPU data, procedural shapes, model files and the GPU-side cache.
 //!
-//! - `vertex`: [`Vertex`], the vertex format (position, normal, uv).
+//! - `vertex`: [`Vertex`], the vertex format (position, normal, uv, tangent).
+//! - `tangents`: MikkTSpace tangents for meshes that come without them.
 //! - `mesh_data`: [`MeshData`], triangles on the CPU (normals generation, bounds).
 //! - `procedural`: cube, sphere, plane, capsule, cylinder constructors on [`MeshData`].
 //! - `mesh_handle`: [`MeshHandle`], names a mesh uploaded to a renderer.
@@ -36,6 +37,7 @@ mod normal_mode;
 mod obj;
 mod procedural;
 mod sub_asset;
+mod tangents;
 mod up_axis;
 mod vertex;
 

@@ -29,7 +29,7 @@ pub struct PartSource {
     pub transform: Mat4,
 }
 
-/// A model file read on the CPU: parts, the decoded base-colour images they use, and every
+/// A model file read on the CPU: parts, the decoded images their materials use, and every
 /// problem met. [`crate::Renderer::upload_model`] turns it into a drawable [`crate::Model`].
 #[derive(Debug)]
 pub struct ModelSource {
@@ -83,40 +83,48 @@ impl ModelSource {
         Ok(source)
     }
 
-    /// Decodes every base-colour image not decoded yet; a failure becomes one problem naming
-    /// the first material that uses the image.
+    /// Decodes every image a material slot names (base colour, metallic-roughness, normal,
+    /// occlusion, emissive) not decoded yet; a failure becomes one problem naming the first
+    /// material that uses the image.
     pub(crate) fn decode_images(&mut self, max_side: u32) {
         for part in &self.parts {
-            let Some(slot) = &part.material.base_color_texture else {
-                continue;
-            };
-            if self.images.contains_key(&slot.image) {
-                continue;
-            }
-            let result = match self.encoded.remove(&slot.image) {
-                Some(bytes) => {
-                    let name = std::path::PathBuf::from(slot.image.to_string());
-                    decode_texture_bytes(&bytes, &name, max_side)
+            let m = &part.material;
+            let slots = [
+                &m.base_color_texture,
+                &m.metallic_roughness_texture,
+                &m.normal_texture,
+                &m.occlusion_texture,
+                &m.emissive_texture,
+            ];
+            for slot in slots.into_iter().flatten() {
+                if self.images.contains_key(&slot.image) {
+                    continue;
                 }
-                None => decode_texture(&slot.image, max_side),
-            };
-            let decoded = match result {
-                Ok(texture) => {
-                    if let Some(warning) = &texture.warning {
-                        self.warnings.push(warning.clone());
+                let result = match self.encoded.remove(&slot.image) {
+                    Some(bytes) => {
+                        let name = std::path::PathBuf::from(slot.image.to_string());
+                        decode_texture_bytes(&bytes, &name, max_side)
                     }
-                    Some(texture)
-                }
-                Err(error) => {
-                    self.problems.push(ModelLoadError::Texture {
-                        obj: self.path.clone(),
-                        material: part.material.name.clone(),
-                        source: Box::new(error),
-                    });
-                    None
-                }
-            };
-            self.images.insert(slot.image.clone(), decoded);
+                    None => decode_texture(&slot.image, max_side),
+                };
+                let decoded = match result {
+                    Ok(texture) => {
+                        if let Some(warning) = &texture.warning {
+                            self.warnings.push(warning.clone());
+                        }
+                        Some(texture)
+                    }
+                    Err(error) => {
+                        self.problems.push(ModelLoadError::Texture {
+                            obj: self.path.clone(),
+                            material: part.material.name.clone(),
+                            source: Box::new(error),
+                        });
+                        None
+                    }
+                };
+                self.images.insert(slot.image.clone(), decoded);
+            }
         }
     }
 

@@ -12,6 +12,7 @@ mod shader_error;
 mod shader_kind;
 mod shader_source;
 
+pub(crate) use layouts::Layouts;
 pub(crate) use pipeline_library::{PipelineKey, PipelineLibrary};
 pub use shader_error::{ShaderError, ShaderReloadError};
 pub(crate) use shader_kind::ShaderKind;

@@ -7,14 +7,40 @@ use super::layouts::{self, Layouts};
 use super::shader_error::ShaderError;
 use super::shader_kind::ShaderKind;
 use super::shader_source::ShaderSource;
+use crate::frame::{AlphaClass, HDR_FORMAT};
 use crate::shading_mode::ShadingMode;
 
-/// Identifies one pipeline: shader, colour format and MSAA sample count.
+/// Identifies one pipeline: shader, colour format, MSAA sample count, and how alpha and back
+/// faces are treated.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub(crate) struct PipelineKey {
     pub(crate) kind: ShaderKind,
     pub(crate) format: wgpu::TextureFormat,
     pub(crate) samples: u32,
+    /// Opaque, masked (cut at the cutoff) or blended (mesh and shadow shaders).
+    pub(crate) alpha: AlphaClass,
+    /// Back faces drawn too (no culling).
+    pub(crate) double_sided: bool,
+}
+
+impl PipelineKey {
+    /// A pipeline of the HDR scene pass.
+    pub(crate) fn scene(kind: ShaderKind, samples: u32) -> Self {
+        Self {
+            kind,
+            format: HDR_FORMAT,
+            samples,
+            alpha: AlphaClass::Opaque,
+            double_sided: false,
+        }
+    }
+
+    /// With this alpha treatment and sidedness.
+    pub(crate) fn with_alpha(mut self, alpha: AlphaClass, double_sided: bool) -> Self {
+        self.alpha = alpha;
+        self.double_sided = double_sided;
+        self
+    }
 }
 
 /// All shader modules and pipelines.
@@ -39,14 +65,18 @@ impl PipelineLibrary {
         let mut warnings = Vec::new();
         for kind in ShaderKind::ALL {
             let from_source = source
-                .read(kind.file())
+                .read_with(kind.file(), kind.preludes())
                 .and_then(|text| compile(device, kind, &text));
             let module = match from_source {
                 Ok(module) => module,
                 Err(error) => {
                     tracing::warn!(%error, shader = kind.file(), "using the embedded shader instead");
                     warnings.push(error);
-                    compile(device, kind, &ShaderSource::read_embedded(kind.file()))?
+                    compile(
+                        device,
+                        kind,
+                        &ShaderSource::read_embedded(kind.file(), kind.preludes()),
+                    )?
                 }
             };
             modules.insert(kind, module);
@@ -104,7 +134,7 @@ impl PipelineLibrary {
     }
 
     fn reload_one(&mut self, device: &wgpu::Device, kind: ShaderKind) -> Result<(), ShaderError> {
-        let text = self.source.read(kind.file())?;
+        let text = self.source.read_with(kind.file(), kind.preludes())?;
         let module = compile(device, kind, &text)?;
         let keys: Vec<PipelineKey> = self
             .pipelines
@@ -177,88 +207,164 @@ fn create_pipeline(
     let line_buffers = [Some(layouts::line_layout())];
     // The wireframe pulls vertices from storage buffers; slot 1 stays the instances.
     let wire_buffers = [None, Some(layouts::instance_layout())];
-    let (layout, buffers, cull_mode, blend, depth_write, depth_compare): (_, &[_], _, _, _, _) =
-        match key.kind {
-            ShaderKind::Mesh(ShadingMode::Wireframe) => (
-                &layouts.wireframe,
-                &wire_buffers,
-                None,
-                None,
-                true,
-                wgpu::CompareFunction::Less,
-            ),
-            ShaderKind::Placeholder => (
-                &layouts.frame_only,
-                &mesh_buffers,
-                Some(wgpu::Face::Back),
-                None,
-                true,
-                wgpu::CompareFunction::Less,
-            ),
-            ShaderKind::Mesh(mode) => (
-                if mode.uses_texture() {
-                    &layouts.textured
-                } else {
-                    &layouts.frame_only
-                },
-                &mesh_buffers,
-                Some(wgpu::Face::Back),
-                None,
-                true,
-                wgpu::CompareFunction::Less,
-            ),
-            ShaderKind::Grid => (
-                &layouts.frame_only,
-                &[],
-                None,
-                Some(wgpu::BlendState::ALPHA_BLENDING),
-                false,
-                wgpu::CompareFunction::LessEqual,
-            ),
-            ShaderKind::DebugLines => (
-                &layouts.frame_only,
-                &line_buffers,
-                None,
-                Some(wgpu::BlendState::ALPHA_BLENDING),
-                false,
-                wgpu::CompareFunction::LessEqual,
-            ),
-        };
+    let cull = if key.double_sided {
+        None
+    } else {
+        Some(wgpu::Face::Back)
+    };
+    let alpha_entry = match key.alpha {
+        AlphaClass::Opaque => "fs_opaque",
+        AlphaClass::Mask => "fs_mask",
+        AlphaClass::Blend => "fs_blend",
+    };
+    // Reverse-Z: nearer is greater. Blended surfaces test but do not write depth.
+    let scene_depth = |write| {
+        Some(wgpu::DepthStencilState {
+            format: crate::DEPTH_FORMAT,
+            depth_write_enabled: Some(write),
+            depth_compare: Some(if write {
+                wgpu::CompareFunction::Greater
+            } else {
+                wgpu::CompareFunction::GreaterEqual
+            }),
+            stencil: wgpu::StencilState::default(),
+            bias: wgpu::DepthBiasState::default(),
+        })
+    };
+    let blend_over = Some(wgpu::BlendState::ALPHA_BLENDING);
+    struct Shape<'a> {
+        layout: &'a wgpu::PipelineLayout,
+        buffers: &'a [Option<wgpu::VertexBufferLayout<'a>>],
+        cull: Option<wgpu::Face>,
+        fragment: Option<&'static str>,
+        blend: Option<wgpu::BlendState>,
+        depth: Option<wgpu::DepthStencilState>,
+        samples: u32,
+    }
+    let samples = key.samples;
+    let shape = match key.kind {
+        ShaderKind::Mesh(ShadingMode::Wireframe) => Shape {
+            layout: &layouts.wireframe,
+            buffers: &wire_buffers,
+            cull: None,
+            fragment: Some("fs_main"),
+            blend: None,
+            depth: scene_depth(true),
+            samples,
+        },
+        ShaderKind::Mesh(ShadingMode::Normal) => Shape {
+            layout: &layouts.frame_only,
+            buffers: &mesh_buffers,
+            cull,
+            fragment: Some("fs_main"),
+            blend: None,
+            depth: scene_depth(true),
+            samples,
+        },
+        ShaderKind::Placeholder => Shape {
+            layout: &layouts.lit,
+            buffers: &mesh_buffers,
+            cull,
+            fragment: Some("fs_main"),
+            blend: None,
+            depth: scene_depth(true),
+            samples,
+        },
+        ShaderKind::Mesh(mode) => Shape {
+            layout: if mode == ShadingMode::Unlit {
+                &layouts.textured
+            } else {
+                &layouts.lit
+            },
+            buffers: &mesh_buffers,
+            cull,
+            fragment: Some(alpha_entry),
+            blend: (key.alpha == AlphaClass::Blend).then_some(wgpu::BlendState::ALPHA_BLENDING),
+            depth: scene_depth(key.alpha != AlphaClass::Blend),
+            samples,
+        },
+        ShaderKind::Grid | ShaderKind::Sky => Shape {
+            layout: &layouts.frame_only,
+            buffers: &[],
+            cull: None,
+            fragment: Some("fs_main"),
+            blend: if key.kind == ShaderKind::Grid {
+                blend_over
+            } else {
+                None
+            },
+            depth: scene_depth(false),
+            samples,
+        },
+        ShaderKind::DebugLines => Shape {
+            layout: &layouts.frame_only,
+            buffers: &line_buffers,
+            cull: None,
+            fragment: Some("fs_main"),
+            blend: blend_over,
+            depth: scene_depth(false),
+            samples,
+        },
+        ShaderKind::Shadow => Shape {
+            layout: if key.alpha == AlphaClass::Mask {
+                &layouts.shadow_masked
+            } else {
+                &layouts.shadow
+            },
+            buffers: &mesh_buffers,
+            cull,
+            fragment: (key.alpha == AlphaClass::Mask).then_some("fs_mask"),
+            blend: None,
+            depth: Some(wgpu::DepthStencilState {
+                format: crate::shadow::SHADOW_FORMAT,
+                depth_write_enabled: Some(true),
+                depth_compare: Some(wgpu::CompareFunction::Less),
+                stencil: wgpu::StencilState::default(),
+                bias: wgpu::DepthBiasState::default(),
+            }),
+            samples: 1,
+        },
+        ShaderKind::Tonemap => Shape {
+            layout: &layouts.tonemap_layout,
+            buffers: &[],
+            cull: None,
+            fragment: Some("fs_main"),
+            blend: None,
+            depth: None,
+            samples: 1,
+        },
+    };
+    let targets = [Some(wgpu::ColorTargetState {
+        format: key.format,
+        blend: shape.blend,
+        write_mask: wgpu::ColorWrites::ALL,
+    })];
+    let depth_only = key.kind == ShaderKind::Shadow;
     device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
         label: Some(key.kind.file()),
-        layout: Some(layout),
+        layout: Some(shape.layout),
         vertex: wgpu::VertexState {
             module,
             entry_point: Some("vs_main"),
             compilation_options: wgpu::PipelineCompilationOptions::default(),
-            buffers,
+            buffers: shape.buffers,
         },
         primitive: wgpu::PrimitiveState {
             topology: wgpu::PrimitiveTopology::TriangleList,
             front_face: wgpu::FrontFace::Ccw,
-            cull_mode,
+            cull_mode: shape.cull,
             ..Default::default()
         },
-        depth_stencil: Some(wgpu::DepthStencilState {
-            format: crate::DEPTH_FORMAT,
-            depth_write_enabled: Some(depth_write),
-            depth_compare: Some(depth_compare),
-            stencil: wgpu::StencilState::default(),
-            bias: wgpu::DepthBiasState::default(),
-        }),
+        depth_stencil: shape.depth,
         multisample: wgpu::MultisampleState {
-            count: key.samples,
+            count: shape.samples,
             ..Default::default()
         },
-        fragment: Some(wgpu::FragmentState {
+        fragment: shape.fragment.map(|entry| wgpu::FragmentState {
             module,
-            entry_point: Some("fs_main"),
+            entry_point: Some(entry),
             compilation_options: wgpu::PipelineCompilationOptions::default(),
-            targets: &[Some(wgpu::ColorTargetState {
-                format: key.format,
-                blend,
-                write_mask: wgpu::ColorWrites::ALL,
-            })],
+            targets: if depth_only { &[] } else { &targets },
         }),
         multiview_mask: None,
         cache: None,

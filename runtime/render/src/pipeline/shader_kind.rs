@@ -2,7 +2,8 @@
 
 use crate::shading_mode::ShadingMode;
 
-/// One shader file of the `shaders/` folder, besides `common.wgsl` which is prepended to all.
+/// One shader file of the `shaders/` folder, besides the preludes prepended to it
+/// (`common.wgsl` always, `lighting.wgsl` for lit ones).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
 pub(crate) enum ShaderKind {
     /// A mesh shading mode.
@@ -13,11 +14,17 @@ pub(crate) enum ShaderKind {
     DebugLines,
     /// The missing-texture placeholder, drawn for objects whose texture failed.
     Placeholder,
+    /// The sky behind the scene.
+    Sky,
+    /// Depth of shadow casters into a shadow map.
+    Shadow,
+    /// HDR → display: exposure, tone mapping, sRGB.
+    Tonemap,
 }
 
 impl ShaderKind {
     /// Every shader, in a stable order.
-    pub(crate) const ALL: [ShaderKind; 8] = [
+    pub(crate) const ALL: [ShaderKind; 11] = [
         ShaderKind::Mesh(ShadingMode::Unlit),
         ShaderKind::Mesh(ShadingMode::LitLow),
         ShaderKind::Mesh(ShadingMode::Lit),
@@ -26,6 +33,9 @@ impl ShaderKind {
         ShaderKind::Grid,
         ShaderKind::DebugLines,
         ShaderKind::Placeholder,
+        ShaderKind::Sky,
+        ShaderKind::Shadow,
+        ShaderKind::Tonemap,
     ];
 
     /// File name inside the shader folder.
@@ -35,6 +45,21 @@ impl ShaderKind {
             ShaderKind::Grid => "grid.wgsl",
             ShaderKind::DebugLines => "debug_lines.wgsl",
             ShaderKind::Placeholder => "placeholder.wgsl",
+            ShaderKind::Sky => "sky.wgsl",
+            ShaderKind::Shadow => "shadow.wgsl",
+            ShaderKind::Tonemap => "tonemap.wgsl",
+        }
+    }
+
+    /// Files prepended to this one after `common.wgsl`: the material maps (`material.wgsl`)
+    /// and the lights, shadows and sky light (`lighting.wgsl`).
+    pub(crate) const fn preludes(self) -> &'static [&'static str] {
+        match self {
+            ShaderKind::Mesh(ShadingMode::Lit | ShadingMode::LitLow) | ShaderKind::Placeholder => {
+                &["material.wgsl", "lighting.wgsl"]
+            }
+            ShaderKind::Mesh(ShadingMode::Unlit) | ShaderKind::Shadow => &["material.wgsl"],
+            _ => &[],
         }
     }
 }

@@ -37,6 +37,27 @@ const EMBEDDED: &[(&str, &str)] = &[
         "placeholder.wgsl",
         include_str!("../../../../shaders/placeholder.wgsl"),
     ),
+    (
+        "material.wgsl",
+        include_str!("../../../../shaders/material.wgsl"),
+    ),
+    (
+        "lighting.wgsl",
+        include_str!("../../../../shaders/lighting.wgsl"),
+    ),
+    ("sky.wgsl", include_str!("../../../../shaders/sky.wgsl")),
+    (
+        "shadow.wgsl",
+        include_str!("../../../../shaders/shadow.wgsl"),
+    ),
+    (
+        "tonemap.wgsl",
+        include_str!("../../../../shaders/tonemap.wgsl"),
+    ),
+    (
+        "environment.wgsl",
+        include_str!("../../../../shaders/environment.wgsl"),
+    ),
 ];
 
 /// Where shader text is read from.
@@ -71,18 +92,43 @@ impl ShaderSource {
     /// # Errors
     /// [`ShaderError::Read`] when a file cannot be read from the folder.
     pub fn read(&self, file: &str) -> Result<String, ShaderError> {
-        let common = self.read_one(COMMON_FILE)?;
-        let body = self.read_one(file)?;
-        Ok(format!("{common}\n// ---- {file} ----\n{body}"))
+        self.read_with(file, &[])
     }
 
-    /// The embedded text of shader `file` with `common.wgsl` prepended.
-    pub(crate) fn read_embedded(file: &str) -> String {
-        format!(
-            "{}\n// ---- {file} ----\n{}",
-            embedded(COMMON_FILE),
-            embedded(file)
-        )
+    /// The full text of shader `file`: `common.wgsl`, then each of `preludes`, then the file.
+    ///
+    /// # Errors
+    /// [`ShaderError::Read`] when a file cannot be read from the folder.
+    pub fn read_with(&self, file: &str, preludes: &[&str]) -> Result<String, ShaderError> {
+        let mut text = self.read_one(COMMON_FILE)?;
+        for prelude in preludes.iter().chain(std::iter::once(&file)) {
+            let body = self.read_one(prelude)?;
+            text.push_str(&format!("\n// ---- {prelude} ----\n{body}"));
+        }
+        Ok(text)
+    }
+
+    /// The text of shader `file` alone (a shader that does not share `common.wgsl`, such as
+    /// the sky bake).
+    ///
+    /// # Errors
+    /// [`ShaderError::Read`] when the file cannot be read from the folder.
+    pub fn read_standalone(&self, file: &str) -> Result<String, ShaderError> {
+        self.read_one(file)
+    }
+
+    /// The embedded text of shader `file` alone.
+    pub(crate) fn read_embedded_standalone(file: &str) -> String {
+        embedded(file).to_owned()
+    }
+
+    /// The embedded text of shader `file` with `common.wgsl` and `preludes` prepended.
+    pub(crate) fn read_embedded(file: &str, preludes: &[&str]) -> String {
+        let mut text = embedded(COMMON_FILE).to_owned();
+        for prelude in preludes.iter().chain(std::iter::once(&file)) {
+            text.push_str(&format!("\n// ---- {prelude} ----\n{}", embedded(prelude)));
+        }
+        text
     }
 
     fn read_one(&self, file: &str) -> Result<String, ShaderError> {

@@ -64,16 +64,28 @@ impl Renderer {
         self.gpu.device().limits().max_texture_dimension_2d
     }
 
-    /// Uploads an sRGB image as a texture, with mipmaps.
+    /// Uploads an sRGB image as a colour texture (base colour, emissive), with mipmaps.
     pub fn add_texture(&mut self, image: &RgbaImage, label: &str) -> TextureHandle {
-        let layout = &self.pipelines.layouts().material;
         let source = TextureSource::from_image(image.clone(), true);
         self.textures.add(
             self.gpu.device(),
             self.gpu.queue(),
-            layout,
             &source.levels,
             label,
+            false,
+        )
+    }
+
+    /// Uploads an image as a data texture (normal, metallic-roughness, occlusion maps: the
+    /// bytes are values, not sRGB colour), with mipmaps.
+    pub fn add_data_texture(&mut self, image: &RgbaImage, label: &str) -> TextureHandle {
+        let source = TextureSource::from_image(image.clone(), true);
+        self.textures.add(
+            self.gpu.device(),
+            self.gpu.queue(),
+            &source.levels,
+            label,
+            true,
         )
     }
 
@@ -86,26 +98,50 @@ impl Renderer {
         &mut self,
         path: impl AsRef<Path>,
     ) -> Result<TextureHandle, TextureLoadError> {
+        self.load_texture_as(path, false)
+    }
+
+    /// Loads a PNG or JPEG file as a colour texture (`linear` false: sRGB; base colour,
+    /// emissive) or a data texture (`linear` true: normal, metallic-roughness, occlusion).
+    /// Loaded once per colour space.
+    ///
+    /// # Errors
+    /// [`TextureLoadError`] naming the file when it cannot be read or decoded.
+    pub fn load_texture_as(
+        &mut self,
+        path: impl AsRef<Path>,
+        linear: bool,
+    ) -> Result<TextureHandle, TextureLoadError> {
         let source = ImageSource::File(path.as_ref().to_owned());
-        if let Some(handle) = self.textures.cached(&source) {
+        if let Some(handle) = self.textures.cached(&source, linear) {
             return Ok(handle);
         }
         let decoded = decode_texture(&source, self.max_texture_side())?;
         if let Some(warning) = &decoded.warning {
             tracing::warn!("{warning}");
         }
-        Ok(self.upload_texture(&source, &decoded))
+        Ok(self.upload_texture_as(&source, &decoded, linear))
     }
 
-    /// Uploads a decoded texture for `source` (once per source).
+    /// Uploads a decoded colour (sRGB) texture for `source` (once per source).
     pub fn upload_texture(
         &mut self,
         source: &ImageSource,
         texture: &TextureSource,
     ) -> TextureHandle {
-        let layout = &self.pipelines.layouts().material;
+        self.upload_texture_as(source, texture, false)
+    }
+
+    /// Uploads a decoded texture for `source` as colour (sRGB) or data (`linear`), once per
+    /// source and colour space.
+    pub fn upload_texture_as(
+        &mut self,
+        source: &ImageSource,
+        texture: &TextureSource,
+        linear: bool,
+    ) -> TextureHandle {
         self.textures
-            .insert(self.gpu.device(), self.gpu.queue(), layout, source, texture)
+            .insert(self.gpu.device(), self.gpu.queue(), source, texture, linear)
     }
 
     /// Like [`Renderer::load_texture`], but a failure gives the magenta checker
@@ -116,11 +152,20 @@ impl Renderer {
         &mut self,
         path: impl AsRef<Path>,
     ) -> (TextureHandle, Option<TextureLoadError>) {
+        self.load_texture_or_fallback_as(path, false)
+    }
+
+    /// [`Renderer::load_texture_or_fallback`] as colour (sRGB) or data (`linear`).
+    pub fn load_texture_or_fallback_as(
+        &mut self,
+        path: impl AsRef<Path>,
+        linear: bool,
+    ) -> (TextureHandle, Option<TextureLoadError>) {
         let source = ImageSource::File(path.as_ref().to_owned());
         if self.textures.has_failed(&source) {
             return (self.textures.checker(), None);
         }
-        match self.load_texture(path) {
+        match self.load_texture_as(path, linear) {
             Ok(handle) => (handle, None),
             Err(error) => {
                 self.textures.mark_failed(&source);
@@ -219,9 +264,11 @@ impl Renderer {
         Ok((model, problems))
     }
 
-    /// Uploads a model read on the CPU: its meshes, its decoded images (each once per
-    /// renderer), materials drawn as their base colour × base-colour texture. A part whose
-    /// texture or material library failed shows the missing-texture placeholder. Returns the
+    /// Uploads a model read on the CPU: its meshes (tangents generated where the file has
+    /// none), its decoded images (each once per renderer and colour space) and its materials,
+    /// drawn physically based with every map, alpha mode and sidedness the file gives. A part
+    /// whose base colour texture or material library failed shows the missing-texture
+    /// placeholder; a failed data map (normal, …) is left out. Returns the
     /// model and the source's problems, each logged once.
     pub fn upload_model(&mut self, source: ModelSource) -> (Model, Vec<ModelLoadError>) {
         let ModelSource {
@@ -245,26 +292,53 @@ impl Renderer {
                 continue;
             };
             let mut file_material = part.material;
-            let texture = match file_material.base_color_texture.as_mut() {
-                None => None,
-                Some(slot) => {
-                    let handle = match (self.textures.cached(&slot.image), images.get(&slot.image))
-                    {
-                        (Some(handle), _) => handle,
-                        (None, Some(Some(decoded))) => self.upload_texture(&slot.image, decoded),
-                        _ => self.textures.checker(),
-                    };
-                    slot.handle = Some(handle);
-                    Some(handle)
-                }
+            let mut upload = |slot: &mut Option<crate::model_material::TextureRef>,
+                              linear: bool| {
+                let slot = slot.as_mut()?;
+                let handle = match (
+                    self.textures.cached(&slot.image, linear),
+                    images.get(&slot.image),
+                ) {
+                    (Some(handle), _) => handle,
+                    (None, Some(Some(decoded))) => {
+                        self.upload_texture_as(&slot.image, decoded, linear)
+                    }
+                    _ => self.textures.checker(),
+                };
+                slot.handle = Some(handle);
+                Some(handle)
             };
+            let texture = upload(&mut file_material.base_color_texture, false);
+            let metallic_roughness = upload(&mut file_material.metallic_roughness_texture, true);
+            let normal = upload(&mut file_material.normal_texture, true);
+            let occlusion = upload(&mut file_material.occlusion_texture, true);
+            let emissive = upload(&mut file_material.emissive_texture, false);
+            let checker = self.textures.checker();
+            // A data map that failed draws as if absent (a checker normal map would be noise).
+            let data = |h: Option<TextureHandle>| h.filter(|&h| h != checker);
             let material = if part.material_missing {
                 Material::textured(self.textures.checker())
             } else {
+                let m = &file_material;
                 Material {
-                    color: file_material.base_color,
+                    color: m.base_color,
                     texture,
-                    shading: ShadingMode::Lit,
+                    shading: if m.unlit {
+                        ShadingMode::Unlit
+                    } else {
+                        ShadingMode::Lit
+                    },
+                    metallic: m.metallic,
+                    roughness: m.roughness,
+                    metallic_roughness_texture: data(metallic_roughness),
+                    normal_texture: data(normal),
+                    normal_scale: m.normal_scale,
+                    occlusion_texture: data(occlusion),
+                    occlusion_strength: m.occlusion_strength,
+                    emissive: m.emissive.map(|c| c * m.emissive_strength),
+                    emissive_texture: data(emissive),
+                    alpha_mode: m.alpha_mode,
+                    double_sided: m.double_sided,
                 }
             };
             parts.push(ModelPart {

@@ -1,25 +1,25 @@
-//! [`GpuTexture`]: a sampled texture with its bind group.
+//! [`GpuTexture`]: a sampled 2D texture, all mips uploaded.
 
 use image::RgbaImage;
 
 use super::mipmaps;
 
-/// A 2D sRGB texture, all mips uploaded, bound with the shared sampler.
+/// A 2D texture (sRGB for colour maps, linear for data maps), all mips uploaded.
 #[derive(Debug)]
 pub(crate) struct GpuTexture {
     pub(crate) texture: wgpu::Texture,
-    pub(crate) bind_group: wgpu::BindGroup,
+    pub(crate) view: wgpu::TextureView,
 }
 
 impl GpuTexture {
-    /// Uploads `levels` (sRGB): level 0, then each mip level below it.
+    /// Uploads `levels`: level 0, then each mip level below it. `linear` stores the bytes as
+    /// plain values (normal, metallic-roughness, occlusion maps) instead of sRGB colour.
     pub(crate) fn upload(
         device: &wgpu::Device,
         queue: &wgpu::Queue,
-        layout: &wgpu::BindGroupLayout,
-        sampler: &wgpu::Sampler,
         levels: &[RgbaImage],
         label: &str,
+        linear: bool,
     ) -> Self {
         let fallback = RgbaImage::from_pixel(1, 1, image::Rgba([255; 4]));
         let levels = if levels.is_empty() {
@@ -28,6 +28,7 @@ impl GpuTexture {
             levels
         };
         let (width, height) = levels[0].dimensions();
+        let count = (levels.len() as u32).min(mipmaps::mip_level_count(width, height));
         let texture = device.create_texture(&wgpu::TextureDescriptor {
             label: Some(label),
             size: wgpu::Extent3d {
@@ -35,15 +36,18 @@ impl GpuTexture {
                 height,
                 depth_or_array_layers: 1,
             },
-            mip_level_count: (levels.len() as u32).min(mipmaps::mip_level_count(width, height)),
+            mip_level_count: count,
             sample_count: 1,
             dimension: wgpu::TextureDimension::D2,
-            format: wgpu::TextureFormat::Rgba8UnormSrgb,
+            format: if linear {
+                wgpu::TextureFormat::Rgba8Unorm
+            } else {
+                wgpu::TextureFormat::Rgba8UnormSrgb
+            },
             usage: wgpu::TextureUsages::TEXTURE_BINDING | wgpu::TextureUsages::COPY_DST,
             view_formats: &[],
         });
-        let count = (levels.len() as u32).min(mipmaps::mip_level_count(width, height)) as usize;
-        for (level, img) in levels.iter().take(count).enumerate() {
+        for (level, img) in levels.iter().take(count as usize).enumerate() {
             let (w, h) = img.dimensions();
             queue.write_texture(
                 wgpu::TexelCopyTextureInfo {
@@ -66,24 +70,7 @@ impl GpuTexture {
             );
         }
         let view = texture.create_view(&wgpu::TextureViewDescriptor::default());
-        let bind_group = device.create_bind_group(&wgpu::BindGroupDescriptor {
-            label: Some(label),
-            layout,
-            entries: &[
-                wgpu::BindGroupEntry {
-                    binding: 0,
-                    resource: wgpu::BindingResource::TextureView(&view),
-                },
-                wgpu::BindGroupEntry {
-                    binding: 1,
-                    resource: wgpu::BindingResource::Sampler(sampler),
-                },
-            ],
-        });
-        Self {
-            texture,
-            bind_group,
-        }
+        Self { texture, view }
     }
 
     /// Width and height of mip level 0, pixels.

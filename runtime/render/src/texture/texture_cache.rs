@@ -1,6 +1,6 @@
-//! [`TextureCache`]: every texture uploaded to a renderer, textures loaded by source, the
-//! sources that failed (reported once), and the two built-ins: plain white and the magenta
-//! "missing texture" checker.
+//! [`TextureCache`]: every texture uploaded to a renderer, textures loaded by source and
+//! colour space, the sources that failed (reported once), the built-ins (plain white, a flat
+//! normal, the magenta "missing texture" checker) and the bind groups of material map sets.
 
 use std::collections::{HashMap, HashSet};
 
@@ -9,6 +9,7 @@ use image::RgbaImage;
 use super::gpu_texture::GpuTexture;
 use super::texture_handle::TextureHandle;
 use super::texture_source::TextureSource;
+use crate::frame::MaterialMaps;
 use crate::model_material::ImageSource;
 
 /// Side of the fallback checker texture, pixels.
@@ -25,20 +26,20 @@ const CHECKER_DARK: [u8; 4] = [20, 20, 20, 255];
 pub(crate) struct TextureCache {
     sampler: wgpu::Sampler,
     textures: Vec<GpuTexture>,
-    by_source: HashMap<ImageSource, TextureHandle>,
+    /// By source and colour space (`true`: linear).
+    by_source: HashMap<(ImageSource, bool), TextureHandle>,
     failed: HashSet<ImageSource>,
     white: TextureHandle,
+    flat_normal: TextureHandle,
     checker: TextureHandle,
+    /// Material bind groups by their (resolved) maps.
+    material_groups: HashMap<[TextureHandle; 5], wgpu::BindGroup>,
     /// Bytes of every uploaded level, for the GPU memory figures.
     bytes: u64,
 }
 
 impl TextureCache {
-    pub(crate) fn new(
-        device: &wgpu::Device,
-        queue: &wgpu::Queue,
-        layout: &wgpu::BindGroupLayout,
-    ) -> Self {
+    pub(crate) fn new(device: &wgpu::Device, queue: &wgpu::Queue) -> Self {
         let sampler = device.create_sampler(&wgpu::SamplerDescriptor {
             label: Some("onyx albedo sampler"),
             address_mode_u: wgpu::AddressMode::Repeat,
@@ -47,6 +48,7 @@ impl TextureCache {
             mag_filter: wgpu::FilterMode::Linear,
             min_filter: wgpu::FilterMode::Linear,
             mipmap_filter: wgpu::MipmapFilterMode::Linear,
+            anisotropy_clamp: 16,
             ..Default::default()
         });
         let mut cache = Self {
@@ -55,66 +57,65 @@ impl TextureCache {
             by_source: HashMap::new(),
             failed: HashSet::new(),
             white: TextureHandle(0),
+            flat_normal: TextureHandle(0),
             checker: TextureHandle(0),
+            material_groups: HashMap::new(),
             bytes: 0,
         };
         let white = RgbaImage::from_pixel(1, 1, image::Rgba([255; 4]));
-        cache.white = cache.add(device, queue, layout, &[white], "onyx white");
+        cache.white = cache.add(device, queue, &[white], "onyx white", false);
+        let flat = RgbaImage::from_pixel(1, 1, image::Rgba([128, 128, 255, 255]));
+        cache.flat_normal = cache.add(device, queue, &[flat], "onyx flat normal", true);
         let checker = TextureSource::from_image(checker_image(), true);
         cache.checker = cache.add(
             device,
             queue,
-            layout,
             &checker.levels,
             "onyx missing-texture checker",
+            false,
         );
         cache
     }
 
-    /// Uploads an image and its mip levels.
+    /// Uploads an image and its mip levels (`linear`: data, not sRGB colour).
     pub(crate) fn add(
         &mut self,
         device: &wgpu::Device,
         queue: &wgpu::Queue,
-        layout: &wgpu::BindGroupLayout,
         levels: &[RgbaImage],
         label: &str,
+        linear: bool,
     ) -> TextureHandle {
         let handle = TextureHandle(self.textures.len() as u32);
         self.bytes += levels
             .iter()
             .map(|l| u64::from(l.width()) * u64::from(l.height()) * 4)
             .sum::<u64>();
-        self.textures.push(GpuTexture::upload(
-            device,
-            queue,
-            layout,
-            &self.sampler,
-            levels,
-            label,
-        ));
+        self.textures
+            .push(GpuTexture::upload(device, queue, levels, label, linear));
         handle
     }
 
-    /// The texture of `source`, if it was uploaded.
-    pub(crate) fn cached(&self, source: &ImageSource) -> Option<TextureHandle> {
-        self.by_source.get(&canonical(source)).copied()
+    /// The texture of `source` in that colour space, if it was uploaded.
+    pub(crate) fn cached(&self, source: &ImageSource, linear: bool) -> Option<TextureHandle> {
+        self.by_source.get(&(canonical(source), linear)).copied()
     }
 
-    /// Uploads a decoded image for `source` (once: a second call returns the first handle).
+    /// Uploads a decoded image for `source` (once per colour space: a second call returns the
+    /// first handle).
     pub(crate) fn insert(
         &mut self,
         device: &wgpu::Device,
         queue: &wgpu::Queue,
-        layout: &wgpu::BindGroupLayout,
         source: &ImageSource,
         texture: &TextureSource,
+        linear: bool,
     ) -> TextureHandle {
-        let key = canonical(source);
+        let key = (canonical(source), linear);
         if let Some(&handle) = self.by_source.get(&key) {
             return handle;
         }
-        let handle = self.add(device, queue, layout, &texture.levels, &source.to_string());
+        let handle = self.add(device, queue, &texture.levels, &source.to_string(), linear);
         let (width, height) = texture.original_size;
         tracing::debug!(%source, width, height, "texture uploaded");
         self.by_source.insert(key, handle);
@@ -135,9 +136,56 @@ impl TextureCache {
         self.textures.get(handle.0 as usize)
     }
 
-    /// Plain white 1×1 (the texture of untextured materials).
-    pub(crate) fn white(&self) -> TextureHandle {
-        self.white
+    /// The bind group of a material's maps (group 1 of the mesh pipelines), built on first
+    /// use; absent maps bind their neutral texture (white; a flat normal).
+    pub(crate) fn material_group(
+        &mut self,
+        device: &wgpu::Device,
+        layout: &wgpu::BindGroupLayout,
+        maps: &MaterialMaps,
+    ) -> &wgpu::BindGroup {
+        let key = self.resolve_maps(maps);
+        let textures = &self.textures;
+        let sampler = &self.sampler;
+        self.material_groups.entry(key).or_insert_with(|| {
+            let entries: Vec<wgpu::BindGroupEntry<'_>> = key
+                .iter()
+                .enumerate()
+                .map(|(i, h)| wgpu::BindGroupEntry {
+                    binding: i as u32,
+                    resource: wgpu::BindingResource::TextureView(&textures[h.0 as usize].view),
+                })
+                .chain(std::iter::once(wgpu::BindGroupEntry {
+                    binding: 5,
+                    resource: wgpu::BindingResource::Sampler(sampler),
+                }))
+                .collect();
+            device.create_bind_group(&wgpu::BindGroupDescriptor {
+                label: Some("onyx material maps"),
+                layout,
+                entries: &entries,
+            })
+        })
+    }
+
+    /// The bind group of `maps` if [`TextureCache::material_group`] built it.
+    pub(crate) fn cached_material_group(&self, maps: &MaterialMaps) -> Option<&wgpu::BindGroup> {
+        self.material_groups.get(&self.resolve_maps(maps))
+    }
+
+    /// The textures bound for `maps`: each map, or its slot's neutral texture.
+    fn resolve_maps(&self, maps: &MaterialMaps) -> [TextureHandle; 5] {
+        let resolve = |h: Option<TextureHandle>, neutral| {
+            h.filter(|h| (h.0 as usize) < self.textures.len())
+                .unwrap_or(neutral)
+        };
+        [
+            resolve(maps.base_color, self.white),
+            resolve(maps.metallic_roughness, self.white),
+            resolve(maps.normal, self.flat_normal),
+            resolve(maps.occlusion, self.white),
+            resolve(maps.emissive, self.white),
+        ]
     }
 
     /// Magenta/black checker shown in place of a texture that failed to load.

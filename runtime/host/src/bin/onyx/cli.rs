@@ -102,6 +102,10 @@ pub struct HostArgs {
     /// Present frames as soon as they are drawn instead of waiting for the display's refresh.
     #[arg(long)]
     pub no_vsync: bool,
+    /// Multisample anti-aliasing of the window: samples per pixel, 1 (off) or 4. Headless
+    /// screenshots never multisample (their output is compared with reference images).
+    #[arg(long, value_name = "N", default_value_t = 4, value_parser = clap::value_parser!(u32).range(1..=4))]
+    pub msaa: u32,
     /// Report a plugin call still running after SECS seconds, and every 10 s while it lasts
     /// (0: off; it is quiet anyway while a debugger is attached).
     #[arg(long, value_name = "SECS", default_value_t = 5.0, value_parser = parse_seconds)]

@@ -142,6 +142,7 @@ fn window_options(args: &HostArgs, title: &str) -> WindowOptions {
         size: args.size,
         frames: args.frames,
         vsync: !args.no_vsync,
+        msaa_samples: args.msaa,
         ..Default::default()
     }
 }

@@ -199,10 +199,17 @@ pub(crate) fn load_gltf_source(
             index: image.index(),
         };
         let used = source.parts.iter().any(|p| {
-            p.material
-                .base_color_texture
-                .as_ref()
-                .is_some_and(|t| t.image == key)
+            let m = &p.material;
+            [
+                &m.base_color_texture,
+                &m.metallic_roughness_texture,
+                &m.normal_texture,
+                &m.occlusion_texture,
+                &m.emissive_texture,
+            ]
+            .into_iter()
+            .flatten()
+            .any(|t| t.image == key)
         });
         if used {
             match image_bytes(&image, &buffers, folder) {

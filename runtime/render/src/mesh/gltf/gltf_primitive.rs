@@ -1,4 +1,5 @@
-//! [`read_primitive`]: one glTF primitive's accessors as a [`MeshData`].
+//! [`read_primitive`]: one glTF primitive's accessors as a [`MeshData`] (tangents kept when
+//! the file has them).
 
 use glam::Vec3;
 
@@ -57,6 +58,11 @@ pub(crate) fn read_primitive(
         return Primitive::Invalid(format!("index {bad} is past its {count} vertices"));
     }
     let normals: Option<Vec<[f32; 3]>> = reader.read_normals().map(Iterator::collect);
+    // The file's tangents when it has them (with normals); otherwise they are generated.
+    let tangents: Option<Vec<[f32; 4]>> = reader
+        .read_tangents()
+        .map(Iterator::collect)
+        .filter(|t: &Vec<[f32; 4]>| t.len() == positions.len() && uv.rotation == 0.0);
     let uvs: Option<Vec<[f32; 2]>> = reader
         .read_tex_coords(uv_set)
         .map(|t| t.into_f32().map(|c| uv.apply(c)).collect());
@@ -74,7 +80,15 @@ pub(crate) fn read_primitive(
                 .enumerate()
                 .map(|(i, (&p, &n))| {
                     let n = Vec3::from(n).try_normalize().unwrap_or(Vec3::Y);
-                    Vertex::new(clean(p), n.to_array(), uv_at(i))
+                    let vertex = Vertex::new(clean(p), n.to_array(), uv_at(i));
+                    match tangents.as_ref().and_then(|t| t.get(i)) {
+                        Some(&[x, y, z, w])
+                            if [x, y, z, w].iter().all(|c| c.is_finite()) && w != 0.0 =>
+                        {
+                            vertex.with_tangent([x, y, z, w.signum()])
+                        }
+                        _ => vertex,
+                    }
                 })
                 .collect(),
             indices,
