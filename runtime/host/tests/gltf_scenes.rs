@@ -144,6 +144,7 @@ fn lamp_lights_are_point_lights_at_their_nodes_and_the_unknown_extension_warned_
         color,
         intensity,
         range,
+        ..
     } = light
     else {
         panic!("{light:?}")
@@ -286,4 +287,61 @@ fn a_file_the_gltf_crate_panics_on_is_an_error_naming_it() {
         other => panic!("expected an invalid-file error, got {other:?}"),
     }
     let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// Spot lights shone as point lights (Onyx had none); now they keep their cones, clamped
+/// to what `Light::Spot` accepts (outer below 90°, inner below outer).
+#[test]
+fn spot_lights_keep_their_cones_and_suns_cast_shadows() {
+    let dir = tempfile::tempdir().unwrap_or_else(|e| panic!("{e}"));
+    let path = dir.path().join("spots.gltf");
+    let text = r#"{
+        "asset": {"version": "2.0"},
+        "extensionsUsed": ["KHR_lights_punctual"],
+        "extensions": {"KHR_lights_punctual": {"lights": [
+            {"type": "spot", "intensity": 100, "range": 8,
+             "spot": {"innerConeAngle": 0.2, "outerConeAngle": 0.5}},
+            {"type": "spot", "intensity": 100,
+             "spot": {"innerConeAngle": 1.5, "outerConeAngle": 1.5707964}},
+            {"type": "directional", "intensity": 3}
+        ]}},
+        "nodes": [
+            {"name": "a", "extensions": {"KHR_lights_punctual": {"light": 0}}},
+            {"name": "b", "extensions": {"KHR_lights_punctual": {"light": 1}}},
+            {"name": "sun", "extensions": {"KHR_lights_punctual": {"light": 2}}}
+        ],
+        "scenes": [{"nodes": [0, 1, 2]}],
+        "scene": 0
+    }"#;
+    std::fs::write(&path, text).unwrap_or_else(|e| panic!("{e}"));
+    let (entities, warnings) = import(&path);
+    assert!(warnings.iter().all(|w| !w.contains("spot")), "{warnings:?}");
+    let Some(Light::Spot {
+        range,
+        inner_angle,
+        outer_angle,
+        shadows,
+        ..
+    }) = named(&entities, "a").light
+    else {
+        panic!("{:?}", named(&entities, "a").light)
+    };
+    assert_eq!(
+        (range, inner_angle, outer_angle, shadows),
+        (8.0, 0.2, 0.5, false)
+    );
+    let Some(Light::Spot {
+        inner_angle,
+        outer_angle,
+        ..
+    }) = named(&entities, "b").light
+    else {
+        panic!("{:?}", named(&entities, "b").light)
+    };
+    assert!(outer_angle < std::f32::consts::FRAC_PI_2, "{outer_angle}");
+    assert!(inner_angle < outer_angle, "{inner_angle} {outer_angle}");
+    assert!(matches!(
+        named(&entities, "sun").light,
+        Some(Light::Directional { shadows: true, .. })
+    ));
 }

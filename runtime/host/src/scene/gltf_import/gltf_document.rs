@@ -108,16 +108,5 @@ fn left_out(document: &gltf::Document) -> Vec<String> {
             lines.join(", ")
         ));
     }
-    let spots = document
-        .lights()
-        .into_iter()
-        .flatten()
-        .filter(|l| matches!(l.kind(), gltf::khr_lights_punctual::Kind::Spot { .. }))
-        .count();
-    if spots > 0 {
-        warnings.push(format!(
-            "{spots} spot light(s): Onyx has no spot lights yet; each shines as a point light"
-        ));
-    }
     warnings
 }

@@ -91,6 +91,13 @@ pub fn gltf_entities(document: &gltf::Document, tree: &NodeTree, path: &Path) ->
                 color: [1.0; 4],
                 texture: None,
                 shading: ShadingMode::Lit,
+                // Neutral: the file's own materials give metalness, roughness and alpha.
+                metallic: 0.0,
+                roughness: onyx_plugin_api::Material::DEFAULT_ROUGHNESS,
+                emissive: [0.0; 3],
+                alpha_mode: onyx_plugin_api::AlphaMode::Opaque,
+                alpha_cutoff: onyx_plugin_api::Material::DEFAULT_ALPHA_CUTOFF,
+                double_sided: false,
                 visible: true,
             });
         }
@@ -193,25 +200,55 @@ fn convert_camera(camera: &gltf::Camera<'_>, active: bool) -> Camera {
     converted
 }
 
-/// A `KHR_lights_punctual` light: directional (lux taken as Onyx's multiplier), point and
-/// spot as point lights ([`ONYX_PER_CANDELA`]); a light without a range reaches where it
+/// A `KHR_lights_punctual` light: directional (lux taken as Onyx's multiplier, casting
+/// shadows as every sun does by default), point and spot ([`ONYX_PER_CANDELA`]; the spot's
+/// cone kept inside what `Light::Spot` accepts); a light without a range reaches where it
 /// falls to [`FADED_LUX`].
 fn convert_light(light: &gltf::khr_lights_punctual::Light<'_>) -> Light {
     use gltf::khr_lights_punctual::Kind;
     let color = light.color();
     let intensity = light.intensity();
+    let range = light.range().filter(|r| *r > 0.0).unwrap_or_else(|| {
+        if intensity > 0.0 {
+            (intensity / FADED_LUX).sqrt()
+        } else {
+            FALLBACK_RANGE
+        }
+    });
     match light.kind() {
-        Kind::Directional => Light::Directional { color, intensity },
-        Kind::Point | Kind::Spot { .. } => Light::Point {
+        Kind::Directional => Light::Directional {
+            color,
+            intensity,
+            shadows: true,
+        },
+        Kind::Point => Light::Point {
             color,
             intensity: intensity * ONYX_PER_CANDELA,
-            range: light.range().filter(|r| *r > 0.0).unwrap_or_else(|| {
-                if intensity > 0.0 {
-                    (intensity / FADED_LUX).sqrt()
-                } else {
-                    FALLBACK_RANGE
-                }
-            }),
+            range,
+            shadows: false,
         },
+        Kind::Spot {
+            inner_cone_angle,
+            outer_cone_angle,
+        } => {
+            let outer = if outer_cone_angle.is_finite() {
+                outer_cone_angle.clamp(1e-3, std::f32::consts::FRAC_PI_2 - 1e-3)
+            } else {
+                std::f32::consts::FRAC_PI_4
+            };
+            let inner = if inner_cone_angle.is_finite() {
+                inner_cone_angle.clamp(0.0, outer * 0.999)
+            } else {
+                0.0
+            };
+            Light::Spot {
+                color,
+                intensity: intensity * ONYX_PER_CANDELA,
+                range,
+                inner_angle: inner,
+                outer_angle: outer,
+                shadows: false,
+            }
+        }
     }
 }
