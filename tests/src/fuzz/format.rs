@@ -288,6 +288,12 @@ fn run_models(entries: &[PathBuf]) -> Outcome {
         if let Err(e) = onyx_render::mesh::ModelSource::load(entry, &settings, 4096) {
             outcome = Outcome::Refused(e.to_string());
         }
+        // A glTF file is also read as a scene (node tree, cameras, lights, animations).
+        if onyx_render::mesh::is_gltf(entry) {
+            if let Err(e) = onyx_runtime::scene::gltf_import::import_gltf_scene(entry, true) {
+                outcome = Outcome::Refused(e.to_string());
+            }
+        }
     }
     outcome
 }
