@@ -8,8 +8,9 @@ use onyx_plugin_api::host::{CallError, PluginLibrary, PluginRequest};
 use onyx_plugin_api::{AttachInfo, Event, PlatformEvent};
 
 use crate::plugins::{
-    content_hash, open_library_bytes, read_library, unload_image, ImageFate, LibraryWatcher,
-    PluginLoadError, PluginOrigin, PluginStatus, ReloadError, ReloadGate, ReloadReport, Stage,
+    content_hash, open_library_bytes, read_library, unload_image, ImageFate, LibraryBytes,
+    LibraryWatcher, PluginLoadError, PluginOrigin, PluginStatus, ReloadError, ReloadGate,
+    ReloadReport, Stage,
 };
 use crate::services::CallContext;
 use crate::watchdog::plugin_call::PluginCall;
@@ -42,7 +43,7 @@ fn discard(new: &mut onyx_plugin_api::host::PluginInstance, name: &str) -> Optio
 /// A new build read from disk, ready to replace a running plugin.
 struct NewBuild {
     path: PathBuf,
-    bytes: Vec<u8>,
+    bytes: LibraryBytes,
     hash: u64,
     read: Duration,
 }
