@@ -167,6 +167,11 @@ pub(crate) fn open_library_bytes(
 /// The folder prefix of the fresh copies, followed by the process id.
 const COPY_DIR_PREFIX: &str = "onyx-plugins-";
 
+/// A copy, not a hard link to the user's file: a linked image shares the file's inode for as
+/// long as it is mapped, and anything that later rewrites the file in place (`cp`, a test
+/// writing a cut build over it, an editor) would truncate or change the running build's
+/// code under it — a crash, not a refused reload. A copy in the host's own folder is
+/// written by nobody else.
 fn fresh_copy(path: &Path, bytes: &[u8]) -> Result<PathBuf, PluginLoadError> {
     static COUNTER: AtomicU64 = AtomicU64::new(0);
     static SWEPT: std::sync::Once = std::sync::Once::new();
