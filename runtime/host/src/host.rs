@@ -47,6 +47,9 @@ pub struct Host {
     pub(crate) pending_reloads: Vec<std::path::PathBuf>,
     /// The last successful swap, stage by stage.
     pub(crate) last_reload: Option<crate::plugins::ReloadReport>,
+    /// Old builds' images swapped out by this frame's automatic reloads, handed back to the
+    /// system loader at the end of the frame (`Host::unload_retired_images`).
+    pub(crate) retired_images: Vec<crate::host_reload::RetiredImage>,
     /// Keep old builds' images mapped ([`HostConfig::keep_old_builds`]).
     pub(crate) keep_old_builds: bool,
     pub(crate) gui: crate::gui::GuiSystem,
@@ -74,6 +77,7 @@ impl Host {
             reload_gate: crate::plugins::ReloadGate::default(),
             pending_reloads: Vec::new(),
             last_reload: None,
+            retired_images: Vec::new(),
             keep_old_builds: config.keep_old_builds,
             gui: crate::gui::GuiSystem::default(),
             incidents: Vec::new(),
@@ -227,6 +231,7 @@ impl Host {
 
     /// Detaches and removes the plugin `name`. Returns `false` if there is none.
     pub fn unload_plugin(&mut self, name: &str) -> bool {
+        self.unload_retired_images();
         let Some(index) = self.plugins.iter().position(|p| p.name == name) else {
             return false;
         };
@@ -356,6 +361,8 @@ impl Host {
         self.state.io.input.end_frame();
         self.state.clock.end_frame();
         self.apply_plugin_requests();
+        // The frame's new builds have run; the images they replaced go now, off the swap.
+        self.unload_retired_images();
         self.end_tool_frame(steps);
         FrameReport {
             fixed_steps: steps,
@@ -476,6 +483,7 @@ impl Host {
             return;
         }
         self.shut_down = true;
+        self.unload_retired_images();
         for slot in self.plugins.iter_mut().rev() {
             slot.call(&mut self.state, Stage::Detach, |p, cx| p.on_detach(cx));
         }

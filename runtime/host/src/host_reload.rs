@@ -8,8 +8,9 @@ use onyx_plugin_api::host::{CallError, PluginLibrary, PluginRequest};
 use onyx_plugin_api::{AttachInfo, Event, PlatformEvent};
 
 use crate::plugins::{
-    content_hash, open_library_bytes, read_library, unload_image, ImageFate, LibraryWatcher,
-    PluginLoadError, PluginOrigin, PluginStatus, ReloadError, ReloadGate, ReloadReport, Stage,
+    content_hash, open_library_bytes, read_library, unload_image, ImageFate, LibraryBytes,
+    LibraryWatcher, PluginLoadError, PluginOrigin, PluginStatus, ReloadError, ReloadGate,
+    ReloadReport, Stage,
 };
 use crate::services::CallContext;
 use crate::watchdog::plugin_call::PluginCall;
@@ -39,10 +40,19 @@ fn discard(new: &mut onyx_plugin_api::host::PluginInstance, name: &str) -> Optio
     Some(incident)
 }
 
+/// An old build's image swapped out by an automatic reload, waiting for the end of the frame
+/// to be handed back to the system loader (its plugin object is already dropped and nothing
+/// calls into it: the slot holds the new build).
+pub(crate) struct RetiredImage {
+    name: String,
+    library: PluginLibrary,
+    loaded_from: PathBuf,
+}
+
 /// A new build read from disk, ready to replace a running plugin.
 struct NewBuild {
     path: PathBuf,
-    bytes: Vec<u8>,
+    bytes: LibraryBytes,
     hash: u64,
     read: Duration,
 }
@@ -59,6 +69,15 @@ impl NewBuild {
             read: started.elapsed(),
         })
     }
+}
+
+/// When a swap hands the old build's image back to the system loader.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Unload {
+    /// Before the swap returns (a reload asked for by a call: the caller sees the outcome).
+    Now,
+    /// At the end of the frame (an automatic reload at the start of one).
+    AfterFrame,
 }
 
 impl Host {
@@ -140,7 +159,9 @@ impl Host {
                 }
             }
         }
-        let _ = self.swap_all(batch);
+        // Swapped at the start of the frame; the old images go at its end, so the new
+        // builds run this frame without waiting for the loader to unmap the old ones.
+        let _ = self.swap_all(batch, Unload::AfterFrame);
     }
 
     /// The plugins loaded from `path`.
@@ -188,17 +209,21 @@ impl Host {
                 }
             }
         }
-        errors.extend(self.swap_all(batch));
+        errors.extend(self.swap_all(batch, Unload::Now));
         errors
     }
 
     /// Swaps each plugin of `batch` for its new build (read again when `None`), one after
     /// the other with no plugin call in between.
-    fn swap_all(&mut self, batch: Vec<(String, Option<NewBuild>)>) -> Vec<ReloadError> {
+    fn swap_all(
+        &mut self,
+        batch: Vec<(String, Option<NewBuild>)>,
+        unload: Unload,
+    ) -> Vec<ReloadError> {
         let count = batch.len();
         let mut errors = Vec::new();
         for (name, build) in batch {
-            if let Err(error) = self.reload_from(&name, build) {
+            if let Err(error) = self.reload_from(&name, build, unload) {
                 errors.push(error);
             }
         }
@@ -224,13 +249,22 @@ impl Host {
     /// build starts empty, gets `on_init` again (once the host has initialised its plugins)
     /// and the host logs that it did.
     pub fn reload_plugin(&mut self, name: &str) -> Result<(), ReloadError> {
-        self.reload_from(name, None)
+        self.reload_from(name, None, Unload::Now)
     }
 
     /// [`Host::reload_plugin`] with the new build's bytes, if already read; reports the
     /// outcome (log and platform event).
-    fn reload_from(&mut self, name: &str, build: Option<NewBuild>) -> Result<(), ReloadError> {
-        let result = self.try_reload(name, build);
+    fn reload_from(
+        &mut self,
+        name: &str,
+        build: Option<NewBuild>,
+        unload: Unload,
+    ) -> Result<(), ReloadError> {
+        if unload == Unload::Now {
+            // Images retired earlier go first, in order.
+            self.unload_retired_images();
+        }
+        let result = self.try_reload(name, build, unload);
         self.report_reload(name, result.as_ref().map(|_| ()));
         result
     }
@@ -273,7 +307,28 @@ impl Host {
         fate
     }
 
-    fn try_reload(&mut self, name: &str, build: Option<NewBuild>) -> Result<(), ReloadError> {
+    /// Hands back the images of builds swapped out by this frame's automatic reloads, and
+    /// completes the swap reports that waited for them.
+    pub(crate) fn unload_retired_images(&mut self) {
+        for retired in std::mem::take(&mut self.retired_images) {
+            let started = Instant::now();
+            let fate = self.unload(&retired.name, retired.library, &retired.loaded_from);
+            let took = started.elapsed();
+            if let Some(report) = &mut self.last_reload {
+                if report.plugin == retired.name && report.old_image == ImageFate::AfterFrame {
+                    report.old_image = fate;
+                    report.unload = took;
+                }
+            }
+        }
+    }
+
+    fn try_reload(
+        &mut self,
+        name: &str,
+        build: Option<NewBuild>,
+        unload: Unload,
+    ) -> Result<(), ReloadError> {
         let started = Instant::now();
         let index = self
             .plugins
@@ -465,9 +520,17 @@ impl Host {
         let unload_started = Instant::now();
         let old_image = match disposed {
             Ok(()) => match (old_library, &old_origin) {
-                (Some(library), PluginOrigin::Library { loaded_from, .. }) => {
-                    self.unload(name, library, loaded_from)
-                }
+                (Some(library), PluginOrigin::Library { loaded_from, .. }) => match unload {
+                    Unload::Now => self.unload(name, library, loaded_from),
+                    Unload::AfterFrame => {
+                        self.retired_images.push(RetiredImage {
+                            name: name.to_owned(),
+                            library,
+                            loaded_from: loaded_from.clone(),
+                        });
+                        ImageFate::AfterFrame
+                    }
+                },
                 _ => ImageFate::Kept("it was not loaded from a file".into()),
             },
             Err(error) => {

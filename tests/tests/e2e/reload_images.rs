@@ -234,3 +234,45 @@ fn an_old_build_that_left_nothing_running_is_unmapped() {
         "the unloaded plugin's image is still mapped"
     );
 }
+
+/// An automatic reload (the file watcher, at the start of a frame) hands the old image back
+/// at the end of that frame, off the swap: once the frame that swapped has returned, the old
+/// build is unmapped and the swap's report says so.
+#[test]
+fn a_watched_swap_unmaps_the_old_image_by_the_end_of_its_frame() {
+    const RELOAD: &str = "fixture_reload";
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join(library_file_name(RELOAD));
+    std::fs::copy(plugin_library("fixture-reload-v1"), &path).unwrap();
+    let mut host = HeadlessHost::new();
+    host.load_plugin_file(&path).unwrap();
+    host.host_mut().set_hot_reload(true).unwrap();
+    host.step(2);
+    let copy = |host: &HeadlessHost| match host.host().plugin(RELOAD).expect("loaded").origin() {
+        PluginOrigin::Library { loaded_from, .. } => loaded_from.clone(),
+        other => panic!("{other:?}"),
+    };
+    let reloads = |host: &HeadlessHost| host.host().plugin(RELOAD).expect("loaded").reloads();
+    for swap in 1..=2u32 {
+        let old = copy(&host);
+        let staging = path.with_extension("staging");
+        std::fs::copy(
+            plugin_library(&format!("fixture-reload-v{}", 1 + swap % 2)),
+            &staging,
+        )
+        .unwrap();
+        std::fs::rename(&staging, &path).unwrap();
+        let started = Instant::now();
+        while reloads(&host) < swap {
+            host.step(1);
+            assert!(started.elapsed() < Duration::from_secs(10), "no reload");
+        }
+        assert_eq!(old_image(&host), ImageFate::Unmapped, "swap {swap}");
+        assert!(!mapped(&old), "swap {swap}: the old image is still mapped");
+        assert!(
+            mapped(&copy(&host)),
+            "swap {swap}: the new build is not mapped"
+        );
+    }
+    assert_eq!(host.plugin_status(RELOAD), Some(&PluginStatus::Running));
+}

@@ -52,6 +52,9 @@ pub enum ImageFate {
     Pinned,
     /// Not handed back, for the reason given.
     Kept(String),
+    /// To be handed back at the end of the frame that swapped it out (an automatic reload);
+    /// the swap's report then says what became of it.
+    AfterFrame,
 }
 
 impl std::fmt::Display for ImageFate {
@@ -65,6 +68,7 @@ impl std::fmt::Display for ImageFate {
                  that spawns one)",
             ),
             ImageFate::Kept(reason) => write!(f, "kept mapped: {reason}"),
+            ImageFate::AfterFrame => f.write_str("handed back at the end of this frame"),
         }
     }
 }

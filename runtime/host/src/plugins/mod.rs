@@ -1,7 +1,7 @@
 //! Plugins: finding, loading, and calling them.
 //!
 //! - `plugin_search.rs`: [`PluginSearchPath`], NAME → library file.
-//! - `plugin_loader.rs`: [`open_library`], fresh-copy loading (one read: hash, check, copy),
+//! - `plugin_loader.rs`: [`open_library`], fresh-copy loading (one mapping: hash, check, copy),
 //!   timed in [`LoadTimings`].
 //! - `image_unload.rs`: [`ImageFate`], an old build's image handed back to the system loader
 //!   once nothing from it can run (and how the host knows).
@@ -34,7 +34,7 @@ pub use image_unload::ImageFate;
 pub use library_watcher::LibraryWatcher;
 pub use plugin_load_error::PluginLoadError;
 pub use plugin_loader::{content_hash, open_library, LoadTimings, OpenedLibrary};
-pub(crate) use plugin_loader::{open_library_bytes, read_library};
+pub(crate) use plugin_loader::{open_library_bytes, read_library, LibraryBytes};
 pub use plugin_search::{PluginSearchPath, PLUGIN_PATH_VAR};
 pub use plugin_slot::{PluginOrigin, PluginSlot};
 pub use plugin_status::PluginStatus;

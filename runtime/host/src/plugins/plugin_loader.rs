@@ -29,7 +29,7 @@ pub struct OpenedLibrary {
 /// The stages of [`open_library`], timed.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct LoadTimings {
-    /// Reading the file (once) and hashing it.
+    /// Mapping the file (once, read-only) and hashing it.
     pub read: Duration,
     /// The ELF check of the bytes read (`library_check`).
     pub check: Duration,
@@ -53,9 +53,9 @@ pub fn content_hash(bytes: &[u8]) -> u64 {
 ///
 /// The dynamic loader returns the already-mapped image when asked for a path it has opened
 /// before, so each load — the first, and every hot reload — opens a fresh copy; on Unix the
-/// copy is deleted right after opening (the mapping stays valid). The file is read once: the
-/// hash, the ELF check and the copy all come from the same bytes, so what is checked is what
-/// is mapped even if the file changes meanwhile.
+/// copy is deleted right after opening (the mapping stays valid). The file is mapped once
+/// (see [`read_library`]): the hash, the ELF check and the copy all come from the same
+/// mapping, and the check touches only the pages of the tables it reads.
 pub fn open_library(path: &Path) -> Result<OpenedLibrary, PluginLoadError> {
     let started = Instant::now();
     let bytes = read_library(path)?;
@@ -64,8 +64,18 @@ pub fn open_library(path: &Path) -> Result<OpenedLibrary, PluginLoadError> {
     open_library_bytes(path, &bytes, hash, read)
 }
 
-/// Reads a library file, refusing what is not a regular file.
-pub(crate) fn read_library(path: &Path) -> Result<Vec<u8>, PluginLoadError> {
+/// A library file mapped read-only: its bytes without copying them into the heap.
+pub(crate) type LibraryBytes = memmap2::Mmap;
+
+/// Maps a library file read-only, refusing what is not a regular file.
+///
+/// Mapping instead of reading saves a copy of the whole file (a debug plugin is mostly debug
+/// info the loader never reads): the page cache is read in place, and only the pages the
+/// hash, the check and the copy touch are faulted in. The watcher only reports a file its
+/// own headers say is complete, and build tools replace a library rather than rewrite it in
+/// place (cargo hard-links or copies a fresh file over it; linkers write a new file), so the
+/// mapping does not change while it is used.
+pub(crate) fn read_library(path: &Path) -> Result<LibraryBytes, PluginLoadError> {
     match std::fs::metadata(path) {
         Err(_) => {
             return Err(PluginLoadError::MissingFile {
@@ -84,10 +94,15 @@ pub(crate) fn read_library(path: &Path) -> Result<Vec<u8>, PluginLoadError> {
         }
         Ok(_) => {}
     }
-    std::fs::read(path).map_err(|cause| PluginLoadError::Read {
+    let read_error = |cause| PluginLoadError::Read {
         path: path.to_path_buf(),
         cause,
-    })
+    };
+    let file = std::fs::File::open(path).map_err(read_error)?;
+    // SAFETY: the mapping is read-only and private to this process; the bytes are only read
+    // as plain data (hashed, parsed with bounds checks, written to the copy), never trusted
+    // as Rust values. See above for why the file is not rewritten while it is mapped.
+    unsafe { memmap2::Mmap::map(&file) }.map_err(read_error)
 }
 
 /// [`open_library`] for bytes already read from `path` (hashing to `hash`, read in `read`).
@@ -152,6 +167,11 @@ pub(crate) fn open_library_bytes(
 /// The folder prefix of the fresh copies, followed by the process id.
 const COPY_DIR_PREFIX: &str = "onyx-plugins-";
 
+/// A copy, not a hard link to the user's file: a linked image shares the file's inode for as
+/// long as it is mapped, and anything that later rewrites the file in place (`cp`, a test
+/// writing a cut build over it, an editor) would truncate or change the running build's
+/// code under it — a crash, not a refused reload. A copy in the host's own folder is
+/// written by nobody else.
 fn fresh_copy(path: &Path, bytes: &[u8]) -> Result<PathBuf, PluginLoadError> {
     static COUNTER: AtomicU64 = AtomicU64::new(0);
     static SWEPT: std::sync::Once = std::sync::Once::new();

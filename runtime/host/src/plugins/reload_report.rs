@@ -21,7 +21,8 @@ pub struct ReloadReport {
     pub attach: Duration,
     /// Dropping the old plugin object (inside its image).
     pub drop: Duration,
-    /// Handing the old image back to the system loader.
+    /// Handing the old image back to the system loader (for an automatic reload, done at the
+    /// end of the frame and not part of `total`).
     pub unload: Duration,
     /// The whole swap.
     pub total: Duration,
