@@ -49,7 +49,7 @@ pub struct Host {
     pub(crate) last_reload: Option<crate::plugins::ReloadReport>,
     /// Old builds' images swapped out by this frame's automatic reloads, handed back to the
     /// system loader at the end of the frame (`Host::unload_retired_images`).
-    pub(crate) retired_images: Vec<crate::host_reload::RetiredImage>,
+    pub(crate) retired_images: Vec<crate::plugins::RetiredImage>,
     /// Keep old builds' images mapped ([`HostConfig::keep_old_builds`]).
     pub(crate) keep_old_builds: bool,
     pub(crate) gui: crate::gui::GuiSystem,

@@ -10,7 +10,7 @@ use onyx_plugin_api::{AttachInfo, Event, PlatformEvent};
 use crate::plugins::{
     content_hash, open_library_bytes, read_library, unload_image, ImageFate, LibraryBytes,
     LibraryWatcher, PluginLoadError, PluginOrigin, PluginStatus, ReloadError, ReloadGate,
-    ReloadReport, Stage,
+    ReloadReport, RetiredImage, Stage,
 };
 use crate::services::CallContext;
 use crate::watchdog::plugin_call::PluginCall;
@@ -38,15 +38,6 @@ fn discard(new: &mut onyx_plugin_api::host::PluginInstance, name: &str) -> Optio
     );
     tracing::error!(plugin = name, "{incident}");
     Some(incident)
-}
-
-/// An old build's image swapped out by an automatic reload, waiting for the end of the frame
-/// to be handed back to the system loader (its plugin object is already dropped and nothing
-/// calls into it: the slot holds the new build).
-pub(crate) struct RetiredImage {
-    name: String,
-    library: PluginLibrary,
-    loaded_from: PathBuf,
 }
 
 /// A new build read from disk, ready to replace a running plugin.

@@ -201,3 +201,15 @@ mod loaded {
         None
     }
 }
+
+/// An old build's image swapped out by an automatic reload, waiting for the end of the frame
+/// to be handed back to the system loader (its plugin object is already dropped and nothing
+/// calls into it: the slot holds the new build).
+pub(crate) struct RetiredImage {
+    /// The plugin it was a build of.
+    pub(crate) name: String,
+    /// The image.
+    pub(crate) library: onyx_plugin_api::host::PluginLibrary,
+    /// The file it was mapped from (the host's own copy).
+    pub(crate) loaded_from: std::path::PathBuf,
+}

@@ -29,8 +29,8 @@ mod reload_gate;
 mod reload_report;
 
 pub use crate::stage::Stage;
-pub(crate) use image_unload::unload_image;
 pub use image_unload::ImageFate;
+pub(crate) use image_unload::{unload_image, RetiredImage};
 pub use library_watcher::LibraryWatcher;
 pub use plugin_load_error::PluginLoadError;
 pub use plugin_loader::{content_hash, open_library, LoadTimings, OpenedLibrary};
