@@ -37,12 +37,7 @@ pub fn menu_bar(
 /// then " *" while it has edits that are not saved.
 fn title(ui: &mut egui::Ui, ctx: &mut Ctx, state: &EditorState) {
     let path = ctx.scene_path();
-    let name = path
-        .as_deref()
-        .map(std::path::Path::new)
-        .and_then(std::path::Path::file_name)
-        .map(|n| n.to_string_lossy().into_owned())
-        .unwrap_or_else(|| "untitled".to_owned());
+    let name = scene_file_name(path.as_deref()).unwrap_or_else(|| "untitled".to_owned());
     let marker = if state.history.is_modified() {
         " *"
     } else {
@@ -52,6 +47,12 @@ fn title(ui: &mut egui::Ui, ctx: &mut Ctx, state: &EditorState) {
     if let Some(path) = path {
         shown.on_hover_text(path);
     }
+}
+
+/// The file name of the scene at `path` (`None` for an untitled scene).
+pub fn scene_file_name(path: Option<&str>) -> Option<String> {
+    let name = std::path::Path::new(path?).file_name()?;
+    Some(name.to_string_lossy().into_owned())
 }
 
 fn file_menu(ui: &mut egui::Ui, ctx: &mut Ctx, state: &mut EditorState) {

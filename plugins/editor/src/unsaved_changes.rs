@@ -67,12 +67,7 @@ pub fn show(ui: &egui::Ui, ctx: &mut Ctx, state: &mut EditorState) {
     let Some(action) = state.asking.clone() else {
         return;
     };
-    let name = ctx
-        .scene_path()
-        .as_deref()
-        .map(std::path::Path::new)
-        .and_then(std::path::Path::file_name)
-        .map(|n| n.to_string_lossy().into_owned())
+    let name = menu::scene_file_name(ctx.scene_path().as_deref())
         .unwrap_or_else(|| "The untitled scene".to_owned());
     let mut answer = None;
     let modal = egui::Modal::new(egui::Id::new("editor-unsaved-changes")).show(ui.ctx(), |ui| {
