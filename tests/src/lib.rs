@@ -6,6 +6,7 @@
 //! nested `cargo build` inside a test would block on cargo's target-directory lock.
 
 pub mod fuzz;
+pub mod vase;
 
 use std::path::PathBuf;
 use std::sync::{Arc, Mutex};

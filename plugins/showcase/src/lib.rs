@@ -1,8 +1,8 @@
 //! `showcase`: what the renderer can draw, in one scene.
 //!
 //! A row of five spheres, one per shading mode (unlit, lit-low, lit, normals, wireframe); a
-//! row of cubes spinning in fixed steps (drawn at interpolated poses), one textured; "Spot"
-//! the cow from `assets/models/spot/` with its own texture; an ambient light, a sun and two
+//! row of cubes spinning in fixed steps (drawn at interpolated poses), one textured; the vase
+//! from `assets/models/vase/` (OBJ + MTL + its own texture); an ambient light, a sun and two
 //! coloured point lights; a perspective camera; the editor grid on Y = 0, which is also the
 //! ground that a few physics bodies fall onto.
 //!
@@ -141,10 +141,12 @@ impl Showcase {
             ))?;
         }
 
-        let spot = ctx.load_mesh("assets/models/spot/spot_triangulated.obj")?;
-        let pose = Transform::from_xyz(-4.0, 0.72, -2.2).with_rotation(Quat::from_rotation_y(2.2));
-        let look = MeshRenderer::new(spot).with_material(Material::color(1.0, 1.0, 1.0));
-        ctx.spawn((Name::new("spot"), pose, look))?;
+        let vase = ctx.load_mesh("assets/models/vase/vase.obj")?;
+        let pose = Transform::from_xyz(-4.0, 0.0, -2.2)
+            .with_rotation(Quat::from_rotation_y(2.2))
+            .with_scale(Vec3::splat(2.0));
+        let look = MeshRenderer::new(vase).with_material(Material::color(1.0, 1.0, 1.0));
+        ctx.spawn((Name::new("vase"), pose, look))?;
         Ok(())
     }
 }

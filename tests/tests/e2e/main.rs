@@ -16,6 +16,7 @@ mod host_services;
 mod joints;
 mod lifecycle;
 mod loading;
+mod made_assets;
 mod native_failures;
 mod physics;
 mod physics_scenes;
