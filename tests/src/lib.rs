@@ -5,6 +5,7 @@
 //! command runs it before `cargo test`), into the same target directory as the tests: a
 //! nested `cargo build` inside a test would block on cargo's target-directory lock.
 
+pub mod cli;
 pub mod fuzz;
 pub mod vase;
 

@@ -4,20 +4,8 @@
 use std::path::Path;
 use std::process::{Command, Output};
 
+use onyx_tests::cli::{assert_exit, onyx, stderr};
 use onyx_tests::{onyx_binary, onyx_in_xvfb, target_dir};
-
-fn onyx(args: &[&str]) -> Output {
-    Command::new(onyx_binary())
-        .args(args)
-        .env("ONYX_PLUGIN_PATH", target_dir())
-        .env("RUST_LOG", "warn")
-        .output()
-        .expect("onyx runs")
-}
-
-fn stderr(out: &Output) -> String {
-    String::from_utf8_lossy(&out.stderr).into_owned()
-}
 
 fn read_json(path: &Path) -> serde_json::Value {
     serde_json::from_str(&std::fs::read_to_string(path).unwrap()).unwrap()
@@ -101,7 +89,7 @@ fn fixed_hz_sets_the_step_rate() {
         "--dump-state",
         dump_path.to_str().unwrap(),
     ]);
-    assert!(out.status.success(), "{}", stderr(&out));
+    assert_exit(&out, 0);
     let state = read_json(&dump_path);
     assert_eq!(state["time"]["ticks"], 12);
     assert!((state["time"]["fixed_delta"].as_f64().unwrap() - 1.0 / 120.0).abs() < 1e-6);
@@ -143,7 +131,7 @@ fn a_plugin_fault_during_the_run_gives_exit_1_and_still_dumps() {
         "--dump-state",
         dump_path.to_str().unwrap(),
     ]);
-    assert_eq!(out.status.code(), Some(1), "{}", stderr(&out));
+    assert_exit(&out, 1);
     let err = stderr(&out);
     assert!(
         err.lines()
@@ -220,7 +208,7 @@ fn plugins_lists_each_folder_once_and_no_test_fixtures() {
         .env_remove("CARGO_TARGET_DIR")
         .output()
         .expect("onyx runs");
-    assert!(out.status.success(), "{}", stderr(&out));
+    assert_exit(&out, 0);
     let text = String::from_utf8_lossy(&out.stdout);
     let folders: Vec<std::path::PathBuf> = text
         .lines()
@@ -339,7 +327,7 @@ fn a_headless_screenshot_matches_the_showcase_reference() {
     let dir = tempfile::tempdir().unwrap();
     let png = dir.path().join("shot.png");
     let out = showcase_screenshot(false, &png);
-    assert!(out.status.success(), "{}", stderr(&out));
+    assert_exit(&out, 0);
     let image = onyx_render::image::open(&png).unwrap().to_rgba8();
     onyx_tests::assert_golden("showcase", &image);
 }
@@ -349,7 +337,7 @@ fn a_windowed_run_draws_the_scene_and_screenshots_it() {
     let dir = tempfile::tempdir().unwrap();
     let png = dir.path().join("window.png");
     let out = showcase_screenshot(true, &png);
-    assert!(out.status.success(), "{}", stderr(&out));
+    assert_exit(&out, 0);
     assert!(
         stderr(&out).is_empty() || !stderr(&out).contains("rendering disabled"),
         "{}",
@@ -388,7 +376,7 @@ fn physics_preset_comes_from_the_scene_and_the_command_line_wins() {
         all.extend_from_slice(args);
         all.extend_from_slice(&["--dump-state", dump]);
         let out = onyx(&all);
-        assert!(out.status.success(), "{}", stderr(&out));
+        assert_exit(&out, 0);
         let state = read_json(&dump_path);
         state["time"]["fixed_delta"].as_f64().unwrap()
     };
@@ -398,7 +386,7 @@ fn physics_preset_comes_from_the_scene_and_the_command_line_wins() {
     assert!((fixed_delta(&["--physics", "fast", "--fixed-hz", "50"]) - 1.0 / 50.0).abs() < 1e-6);
 
     let out = onyx(&["run", "--headless", "--frames", "1", "--physics", "turbo"]);
-    assert_eq!(out.status.code(), Some(2), "{}", stderr(&out));
+    assert_exit(&out, 2);
     assert!(
         stderr(&out).contains("unknown physics preset \"turbo\""),
         "{}",
@@ -429,7 +417,7 @@ fn a_scene_with_a_hierarchy_dumps_each_parent_and_world_pose() {
         "--dump-state",
         dump_path.to_str().unwrap(),
     ]);
-    assert!(out.status.success(), "{}", stderr(&out));
+    assert_exit(&out, 0);
     let dump = read_json(&dump_path);
     let base = entity(&dump, "base");
     let tip = entity(&dump, "tip");
@@ -489,7 +477,7 @@ fn a_command_line_preset_keeps_the_scenes_other_physics_settings() {
         "--dump-state",
         dump_path.to_str().unwrap(),
     ]);
-    assert!(out.status.success(), "{}", stderr(&out));
+    assert_exit(&out, 0);
     let dump = read_json(&dump_path);
     assert!((dump["time"]["fixed_delta"].as_f64().unwrap() - 1.0 / 120.0).abs() < 1e-6);
     let y = entity(&dump, "ball")["components"]["Transform"]["translation"][1]

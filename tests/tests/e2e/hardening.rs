@@ -5,12 +5,13 @@
 //! `onyx` binary.
 
 use std::path::Path;
-use std::process::{Command, Output};
+use std::process::Command;
 
 use onyx_plugin_api::glam::Quat;
 use onyx_plugin_api::{CtxError, InputEvent, Name, Plugin, Transform};
 use onyx_runtime::plugins::Stage;
 use onyx_runtime::{HeadlessHost, HostConfig, PluginLoadError, PluginStatus};
+use onyx_tests::cli::{assert_exit, onyx, onyx_lines};
 use onyx_tests::{onyx_binary, plugin_library, target_dir};
 
 const FAULTY: &str = "fixture_faulty";
@@ -27,23 +28,6 @@ fn faulty_host(settings: &[(&str, &str)]) -> HeadlessHost {
         .expect("hello loads");
     host.step(2);
     host
-}
-
-fn onyx(args: &[&str]) -> Output {
-    Command::new(onyx_binary())
-        .args(args)
-        .env("ONYX_PLUGIN_PATH", target_dir())
-        .env("RUST_LOG", "warn")
-        .output()
-        .expect("onyx runs")
-}
-
-fn onyx_lines(out: &Output) -> Vec<String> {
-    String::from_utf8_lossy(&out.stderr)
-        .lines()
-        .filter(|l| l.starts_with("onyx:"))
-        .map(str::to_owned)
-        .collect()
 }
 
 #[test]
@@ -87,12 +71,7 @@ fn a_panic_in_a_plugins_drop_is_caught_and_named_and_the_host_goes_on() {
         "--dump-state",
         dump.to_str().unwrap(),
     ]);
-    assert_eq!(
-        out.status.code(),
-        Some(1),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
+    assert_exit(&out, 1);
     let lines = onyx_lines(&out);
     assert!(
         lines
@@ -136,12 +115,7 @@ fn a_panic_in_save_state_or_load_state_faults_the_plugin_keeps_the_old_build_and
         "--set",
         "fixture_faulty.reload_self_at=2",
     ]);
-    assert_eq!(
-        out.status.code(),
-        Some(1),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
+    assert_exit(&out, 1);
     let lines = onyx_lines(&out);
     assert!(
         lines.iter().any(|l| l.contains("faulted in save_state")),
@@ -227,11 +201,7 @@ fn saving_follows_a_symlink_keeps_a_files_mode_and_refuses_read_only_files_and_d
         "--save-scene",
         link.to_str().unwrap(),
     ]);
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
+    assert_exit(&out, 0);
     assert!(std::fs::symlink_metadata(&link)
         .unwrap()
         .file_type()
@@ -295,12 +265,7 @@ fn a_screenshot_larger_than_the_gpu_can_draw_is_refused_with_exit_2() {
         "--screenshot",
         png.to_str().unwrap(),
     ]);
-    assert_eq!(
-        out.status.code(),
-        Some(2),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
+    assert_exit(&out, 2);
     let lines = onyx_lines(&out);
     assert!(
         lines.iter().any(|l| l.contains("larger than this GPU")),
@@ -370,11 +335,7 @@ fn a_directory_given_as_a_plugin_is_named_as_one_and_copies_are_not_left_behind(
         .expect("onyx runs");
     let pid = child.id();
     let out = child.wait_with_output().unwrap();
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
+    assert_exit(&out, 0);
     assert!(
         !Path::new(&stale).exists(),
         "the stale folder is still there"

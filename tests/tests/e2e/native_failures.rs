@@ -6,6 +6,7 @@ use std::process::{Command, Output, Stdio};
 use std::time::{Duration, Instant};
 
 use onyx_runtime::watchdog::{EXIT_NATIVE_CRASH, EXIT_PLUGIN_EXITED};
+use onyx_tests::cli::{onyx_lines, stderr};
 use onyx_tests::{onyx_binary, target_dir};
 
 const NATIVE: &str = "fixture_native";
@@ -25,18 +26,6 @@ fn onyx_with(settings: &[(&str, &str)], extra: &[&str]) -> Command {
 
 fn run(settings: &[(&str, &str)], extra: &[&str]) -> Output {
     onyx_with(settings, extra).output().expect("onyx runs")
-}
-
-fn stderr(out: &Output) -> String {
-    String::from_utf8_lossy(&out.stderr).into_owned()
-}
-
-fn onyx_lines(out: &Output) -> Vec<String> {
-    stderr(out)
-        .lines()
-        .filter(|l| l.starts_with("onyx:"))
-        .map(str::to_owned)
-        .collect()
 }
 
 #[test]
