@@ -1,34 +1,8 @@
 //! [`BodyHandle`]: generational handle into the world's body set.
 
-/// Generational handle of a body: slot index (low 32 bits) and generation (high 32 bits).
-///
-/// A handle whose body was removed never resolves again, even after its slot is reused.
-#[repr(transparent)]
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
-pub struct BodyHandle(pub u64);
-
-impl BodyHandle {
-    /// A handle that never resolves.
-    pub const INVALID: Self = Self(u64::MAX);
-
-    /// Packs an index and a generation.
-    #[inline]
-    #[must_use]
-    pub const fn from_parts(index: u32, generation: u32) -> Self {
-        Self((generation as u64) << 32 | index as u64)
-    }
-
-    /// Slot index.
-    #[inline]
-    #[must_use]
-    pub const fn index(self) -> u32 {
-        self.0 as u32
-    }
-
-    /// Generation of the slot when the handle was made.
-    #[inline]
-    #[must_use]
-    pub const fn generation(self) -> u32 {
-        (self.0 >> 32) as u32
-    }
+crate::generational_handle::generational_handle! {
+    /// Generational handle of a body: slot index (low 32 bits) and generation (high 32 bits).
+    ///
+    /// A handle whose body was removed never resolves again, even after its slot is reused.
+    BodyHandle
 }
