@@ -447,6 +447,31 @@ fn the_editor_matches_its_golden_image() {
     assert_golden("editor", &image);
 }
 
+/// Writes the README's Play-mode image, `docs/images/editor-play.png`: the tour scene played
+/// for a second, paused, the Diagnostics panel open. Not a golden (the panel shows this
+/// machine's timings): run it on purpose after a change the image shows, look at it, commit it:
+/// `cargo test -p onyx-tests --test e2e -- --ignored the_readme_play_mode_image`.
+#[test]
+#[ignore = "writes docs/images/editor-play.png; run on purpose"]
+fn the_readme_play_mode_image() {
+    let dir = tempfile::tempdir().unwrap();
+    let mut host = editor_host(dir.path());
+    host.load_scene(&repo_file("assets/scenes/editor_tour.ron"))
+        .expect("the tour scene loads");
+    host.step(2);
+    click(&mut host, "Play");
+    host.step(60);
+    click(&mut host, "Pause");
+    assert_eq!(host.host().play_mode(), PlayMode::Paused);
+    click(&mut host, "Diagnostics");
+    host.pointer_move(Pos2::new(1.0, 700.0));
+    host.step(3);
+    let image = host.screenshot(1280, 720).expect("lavapipe renders");
+    let path = repo_file("docs/images/editor-play.png");
+    image.save(&path).expect("write the image");
+    eprintln!("wrote {}", path.display());
+}
+
 /// The Console of a fresh editor opened on a yellow egui-wgpu warning about an sRGB
 /// framebuffer: a clean start must log no warning at all.
 #[test]
