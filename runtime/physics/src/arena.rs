@@ -1,4 +1,4 @@
-//! [`Arena`]: generational slot storage behind `BodySet` and `ColliderSet`.
+//! [`Arena`]: generational slot storage behind [`HandleSet`](crate::handle_set::HandleSet).
 
 /// One slot: a value or a free-list link, plus the slot's generation.
 #[derive(Clone, Debug)]

@@ -1,6 +1,17 @@
 //! `generational_handle!`: the one definition behind [`BodyHandle`](crate::BodyHandle),
 //! [`ColliderHandle`](crate::ColliderHandle) and [`JointHandle`](crate::JointHandle), the
-//! handles into the world's [`Arena`](crate::arena)-backed sets.
+//! handles into the world's [`HandleSet`](crate::handle_set::HandleSet)s.
+
+/// What a [`HandleSet`](crate::handle_set::HandleSet) needs of its handle type: packing and
+/// unpacking a slot index and generation (each `generational_handle!` type implements it).
+pub trait GenerationalHandle: Copy {
+    /// Packs an index and a generation.
+    fn from_parts(index: u32, generation: u32) -> Self;
+    /// Slot index.
+    fn index(self) -> u32;
+    /// Generation of the slot when the handle was made.
+    fn generation(self) -> u32;
+}
 
 /// Defines a generational handle: a `u64` with the slot index in the low 32 bits and the
 /// slot's generation in the high 32, so a handle whose item was removed never resolves again,
@@ -35,6 +46,21 @@ macro_rules! generational_handle {
             #[must_use]
             pub const fn generation(self) -> u32 {
                 (self.0 >> 32) as u32
+            }
+        }
+
+        impl $crate::generational_handle::GenerationalHandle for $name {
+            #[inline]
+            fn from_parts(index: u32, generation: u32) -> Self {
+                Self::from_parts(index, generation)
+            }
+            #[inline]
+            fn index(self) -> u32 {
+                self.index()
+            }
+            #[inline]
+            fn generation(self) -> u32 {
+                self.generation()
             }
         }
     };

@@ -3,8 +3,8 @@
 
 use std::collections::HashMap;
 
-use crate::arena::Arena;
 use crate::body_handle::BodyHandle;
+use crate::handle_set::HandleSet;
 use crate::joint::Joint;
 use crate::joint_handle::JointHandle;
 
@@ -14,40 +14,30 @@ fn pair_key(a: u32, b: u32) -> u64 {
     u64::from(hi) << 32 | u64::from(lo)
 }
 
-/// All joints of a world, addressed by [`JointHandle`].
+/// All joints of a world, addressed by [`JointHandle`] (broken ones included until removed):
+/// a [`HandleSet`] (through `Deref`: `get`, `len`, `iter`, …) plus the body pairs the joints
+/// keep from colliding.
 #[derive(Clone, Debug, Default)]
 pub struct JointSet {
-    pub(crate) arena: Arena<Joint>,
+    joints: HandleSet<JointHandle, Joint>,
     /// Body-slot pairs joined by joints that do not let them collide, with how many.
     no_collide: HashMap<u64, u32>,
 }
 
+impl std::ops::Deref for JointSet {
+    type Target = HandleSet<JointHandle, Joint>;
+    fn deref(&self) -> &Self::Target {
+        &self.joints
+    }
+}
+
+impl std::ops::DerefMut for JointSet {
+    fn deref_mut(&mut self) -> &mut Self::Target {
+        &mut self.joints
+    }
+}
+
 impl JointSet {
-    /// Joint behind a handle, if still alive.
-    #[must_use]
-    pub fn get(&self, h: JointHandle) -> Option<&Joint> {
-        self.arena.get(h.index(), h.generation())
-    }
-
-    /// Number of joints (broken ones included until removed).
-    #[must_use]
-    pub fn len(&self) -> usize {
-        self.arena.len()
-    }
-
-    /// True when there are no joints.
-    #[must_use]
-    pub fn is_empty(&self) -> bool {
-        self.arena.len() == 0
-    }
-
-    /// Iterates `(handle, joint)`.
-    pub fn iter(&self) -> impl Iterator<Item = (JointHandle, &Joint)> {
-        self.arena
-            .iter()
-            .map(|(i, g, j)| (JointHandle::from_parts(i, g), j))
-    }
-
     /// Whether a joint keeps the bodies in slots `a` and `b` from colliding.
     #[inline]
     pub(crate) fn keeps_apart(&self, a: u32, b: u32) -> bool {

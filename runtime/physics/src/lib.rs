@@ -59,7 +59,8 @@ pub mod contact_event; // `ContactEvent`: contact started / ended.
 pub mod debug_line; // `DebugLine`: coloured segment for debug draw.
 pub mod debug_lines; // `PhysicsWorld::debug_lines`: outlines, contacts, normals.
 pub mod far_body; // `FarBody`: a moving body past the precise range of f32 (reported once).
-mod generational_handle; // `generational_handle!`: the body, collider and joint handles' one definition.
+pub mod generational_handle; // `generational_handle!`: the body, collider and joint handles' one definition.
+pub mod handle_set; // `HandleSet`: the storage behind the body, collider and joint sets.
 pub mod joint; // `Joint`: a joint in the world (description, bodies, reaction, broken).
 pub mod joint_desc; // `JointDesc`: joint kinds (fixed, revolute, prismatic, spherical, distance), limits, motors, springs.
 pub mod joint_error; // `JointError`: why a joint was refused.
