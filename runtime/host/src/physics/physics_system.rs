@@ -65,11 +65,11 @@ impl Link {
 /// The physics world behind the components. Empty scenes cost nothing: with no collider in
 /// the world, a step does no work.
 pub struct PhysicsSystem {
-    world: PhysicsWorld,
+    pub(super) world: PhysicsWorld,
     links: EntityMap<Link>,
     entity_of: HashMap<BodyHandle, hecs::Entity>,
     /// The entity holding each collider's component (events and queries name it).
-    collider_entity: HashMap<ColliderHandle, hecs::Entity>,
+    pub(super) collider_entity: HashMap<ColliderHandle, hecs::Entity>,
     /// Colliders removed since the last step, whose "contact ended" events arrive with it.
     departed: HashMap<ColliderHandle, hecs::Entity>,
     /// Colliders that could not be built, kept so each failure is reported once (until the
@@ -85,7 +85,7 @@ pub struct PhysicsSystem {
     /// What the steps reported that was already logged.
     reports: StepReports,
     /// The physics joints of `Joint` components.
-    joints: JointLinks,
+    pub(super) joints: JointLinks,
 }
 
 impl std::fmt::Debug for PhysicsSystem {
@@ -103,7 +103,7 @@ impl Default for PhysicsSystem {
 }
 
 /// The rigid part (translation and rotation) of a world pose: bodies have no scale.
-fn rigid(pose: &Affine3A) -> Pose {
+pub(super) fn rigid(pose: &Affine3A) -> Pose {
     let (_, rotation, translation) = pose.to_scale_rotation_translation();
     Pose {
         translation,
@@ -206,6 +206,23 @@ impl PhysicsSystem {
         Ok(())
     }
 
+    /// The body of `e`: its own (a `RigidBody`'s, or a static collider's), or the body its
+    /// collider belongs to.
+    pub(super) fn body_of(&self, e: hecs::Entity) -> Option<BodyHandle> {
+        if let Some(link) = self.links.get(e) {
+            return Some(link.body);
+        }
+        let (&collider, _) = self.collider_entity.iter().find(|(_, &x)| x == e)?;
+        self.world
+            .collider(collider)
+            .map(onyx_physics::Collider::parent)
+    }
+
+    /// The body `e` owns (it holds the `RigidBody`, or is a static collider of its own).
+    pub(super) fn own_body(&self, e: hecs::Entity) -> Option<BodyHandle> {
+        self.links.get(e).map(|link| link.body)
+    }
+
     /// The first collider along a ray.
     pub fn raycast(&self, origin: Vec3, direction: Vec3, max_distance: f32) -> Option<RayHit> {
         let length = direction.length();
@@ -263,6 +280,11 @@ impl PhysicsSystem {
             if let Ok(mut joint) = world.ecs.get::<&mut Joint>(e) {
                 joint.broken = true;
             }
+            events.push(Event::Physics(PhysicsEvent::JointBroke {
+                entity: to_api(e),
+                force: broken.force,
+                torque: broken.torque,
+            }));
             tracing::warn!(
                 entity = %to_api(e),
                 "physics: joint broke under {:.1} N, {:.1} N·m",
