@@ -203,3 +203,33 @@ fn a_scaled_box_and_a_scaled_ball_rest_at_their_scaled_heights() {
         "a 0.25 m ball scaled 4× rests with its centre 1 m up, it is at {at}"
     );
 }
+
+#[test]
+fn a_ball_under_a_non_uniform_scale_stays_round_and_is_warned_about_once_by_name() {
+    let host = run(120, |ctx, frame| {
+        if frame != 0 {
+            return;
+        }
+        ctx.spawn((Name::new("ground"), Transform::IDENTITY, Collider::plane()))
+            .unwrap();
+        ctx.spawn((
+            Name::new("egg"),
+            Transform::from_xyz(0.0, 3.0, 0.0).with_scale(Vec3::new(1.0, 2.0, 1.0)),
+            RigidBody::dynamic(),
+            Collider::sphere(0.5),
+        ))
+        .unwrap();
+    });
+    let (_, t) = host.find::<Transform>("egg").unwrap();
+    assert!(
+        (t.translation.y - 1.0).abs() < 0.01,
+        "the ball takes the largest component (radius 1 m) and rests 1 m up: {}",
+        t.translation
+    );
+    let warnings = onyx_runtime::console::console_log()
+        .since(0)
+        .into_iter()
+        .filter(|l| l.message.contains("`egg`") && l.message.contains("non-uniform scale"))
+        .count();
+    assert_eq!(warnings, 1, "one warning naming the entity");
+}

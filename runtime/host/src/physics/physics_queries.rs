@@ -207,3 +207,18 @@ impl PhysicsSystem {
         })
     }
 }
+
+#[cfg(test)]
+mod tests {
+    /// The plugin-side controller's defaults are the engine's (the docs of both say them).
+    #[test]
+    fn the_character_controller_defaults_are_the_engines() {
+        let api = onyx_plugin_api::CharacterController::default();
+        let engine = onyx_physics::CharacterController::default();
+        assert_eq!(api.offset, engine.offset);
+        assert_eq!(api.max_slope_climb_angle, engine.max_slope_climb_angle);
+        assert_eq!(api.step_height, engine.step_height);
+        assert_eq!(api.snap_to_ground, engine.snap_to_ground);
+        assert_eq!(api.push_dynamic_bodies, engine.push_dynamic_bodies);
+    }
+}
