@@ -144,6 +144,45 @@ impl Renderer {
             .insert(self.gpu.device(), self.gpu.queue(), source, texture, linear)
     }
 
+    /// Uploads `texture` in place of the texture `handle` names (its file changed on disk):
+    /// every material drawn with the handle shows the new image from the next frame.
+    pub fn replace_texture(
+        &mut self,
+        handle: TextureHandle,
+        texture: &TextureSource,
+        linear: bool,
+    ) {
+        self.textures
+            .replace(self.gpu.device(), self.gpu.queue(), handle, texture, linear);
+    }
+
+    /// Frees the GPU buffers of a model's meshes (a model replaced by a reload; its handles
+    /// draw nothing after) and forgets the images its materials were uploaded from, so the
+    /// next upload of the same file takes its images anew. The textures themselves stay
+    /// (other models may draw with them).
+    pub fn release_model(&mut self, model: &Model) {
+        let b = &self.builtin;
+        let builtins = [b.cube, b.sphere, b.plane, b.capsule, b.cylinder];
+        for part in &model.parts {
+            if !builtins.contains(&part.mesh) {
+                self.meshes.release(part.mesh);
+            }
+            let m = &part.file_material;
+            for slot in [
+                &m.base_color_texture,
+                &m.metallic_roughness_texture,
+                &m.normal_texture,
+                &m.occlusion_texture,
+                &m.emissive_texture,
+            ]
+            .into_iter()
+            .flatten()
+            {
+                self.textures.forget(&slot.image);
+            }
+        }
+    }
+
     /// Like [`Renderer::load_texture`], but a failure gives the magenta checker
     /// ([`Renderer::fallback_texture`]) along with the error, so drawing can go on. A file
     /// that failed before fails again without being read, and without an error (it was
