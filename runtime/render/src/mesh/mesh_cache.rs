@@ -37,6 +37,20 @@ impl MeshCache {
         handle
     }
 
+    /// Uploads a valid mesh as it is (without tangents, if it has none).
+    pub(crate) fn add_as_is(
+        &mut self,
+        device: &wgpu::Device,
+        storage_layout: &wgpu::BindGroupLayout,
+        data: &MeshData,
+        label: &str,
+    ) -> MeshHandle {
+        let handle = MeshHandle(self.meshes.len() as u32);
+        self.meshes
+            .push(Some(GpuMesh::upload(device, storage_layout, data, label)));
+        handle
+    }
+
     pub(crate) fn get(&self, handle: MeshHandle) -> Option<&GpuMesh> {
         self.meshes.get(handle.0 as usize)?.as_ref()
     }

@@ -144,11 +144,12 @@ impl ModelSource {
         }
     }
 
-    /// Generates the tangents of every part that has none (MikkTSpace: the slow part of an
-    /// upload, so a loader thread does it rather than the frame).
+    /// Generates the tangents of every part that has a normal map and no tangents
+    /// (MikkTSpace: the slow part of an upload, so a loader thread does it rather than the
+    /// frame; without a normal map tangents are never read).
     pub fn generate_tangents(&mut self) {
         for part in &mut self.parts {
-            if !part.mesh.has_tangents() {
+            if part.material.normal_texture.is_some() && !part.mesh.has_tangents() {
                 part.mesh.generate_tangents();
             }
         }

@@ -303,8 +303,8 @@ impl Renderer {
         Ok((model, problems))
     }
 
-    /// Uploads a model read on the CPU: its meshes (tangents generated where the file has
-    /// none), its decoded images (each once per renderer and colour space) and its materials,
+    /// Uploads a model read on the CPU: its meshes (tangents generated where a part has a
+    /// normal map and the file gives none), its decoded images (each once per renderer and colour space) and its materials,
     /// drawn physically based with every map, alpha mode and sidedness the file gives. A part
     /// whose base colour texture or material library failed shows the missing-texture
     /// placeholder; a failed data map (normal, …) is left out. Returns the
@@ -325,11 +325,20 @@ impl Renderer {
             }
         }
         let mut parts = Vec::with_capacity(sources.len());
-        for part in sources {
+        for mut part in sources {
             let label = format!("{}#{}", path.display(), part.name);
-            let Ok(mesh) = self.add_mesh(&part.mesh, &label) else {
+            // Tangents are read only with a normal map (the shader uses the geometric
+            // normal without one): generated here when a loader thread has not.
+            if part.material.normal_texture.is_some() && !part.mesh.has_tangents() {
+                part.mesh.generate_tangents();
+            }
+            if !part.mesh.is_valid() {
                 continue;
-            };
+            }
+            let storage = &self.pipelines.layouts().mesh_storage;
+            let mesh = self
+                .meshes
+                .add_as_is(self.gpu.device(), storage, &part.mesh, &label);
             let mut file_material = part.material;
             let mut upload = |slot: &mut Option<crate::model_material::TextureRef>,
                               linear: bool| {
