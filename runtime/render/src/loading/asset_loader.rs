@@ -178,3 +178,54 @@ impl<K: Clone + Send + 'static> AssetLoader<K> {
         self.jobs = Some(jobs);
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn loads_come_back_once_each_under_their_keys_failures_included() {
+        let dir = std::env::temp_dir().join(format!("onyx-loader-{}", std::process::id()));
+        std::fs::create_dir_all(&dir).unwrap_or_else(|e| panic!("{e}"));
+        let png = dir.join("red.png");
+        image::RgbaImage::from_pixel(8, 4, image::Rgba([255, 0, 0, 255]))
+            .save(&png)
+            .unwrap_or_else(|e| panic!("{e}"));
+        let obj = dir.join("tri.obj");
+        std::fs::write(&obj, "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n")
+            .unwrap_or_else(|e| panic!("{e}"));
+        let mut loader = AssetLoader::new(4);
+        loader.request_texture(1, &png, false);
+        loader.request_texture(2, &dir.join("missing.png"), true);
+        loader.request_model(3, &obj, ImportSettings::default());
+        assert_eq!(loader.pending(), 3);
+        let deadline = Instant::now() + Duration::from_secs(30);
+        let mut done = Vec::new();
+        while let Some(loaded) = loader.wait_until(deadline) {
+            done.push(loaded);
+        }
+        assert_eq!(loader.pending(), 0, "every load came back");
+        done.sort_by_key(|l| *l.key());
+        match &done[..] {
+            [Loaded::Texture {
+                result: Ok(red),
+                linear: false,
+                ..
+            }, Loaded::Texture {
+                result: Err(_),
+                linear: true,
+                ..
+            }, Loaded::Model {
+                result: Ok(model), ..
+            }] => {
+                // Decoded at most 4 pixels a side, with its mips below.
+                assert_eq!(red.levels[0].dimensions(), (4, 2));
+                assert_eq!(red.original_size, (8, 4));
+                assert_eq!(model.triangle_count(), 1);
+            }
+            other => panic!("{other:?}"),
+        }
+        assert!(loader.poll().is_none());
+        let _ = std::fs::remove_dir_all(&dir);
+    }
+}
