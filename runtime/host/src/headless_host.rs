@@ -186,6 +186,9 @@ impl HeadlessHost {
                 if let Err(error) = system.watch_shaders() {
                     tracing::warn!("shader changes will not be picked up: {error}");
                 }
+                if let Err(error) = system.watch_assets() {
+                    tracing::warn!("model and texture changes will not be picked up: {error}");
+                }
                 self.render.insert(system)
             }
         };

@@ -17,6 +17,10 @@ use crate::watchdog::plugin_call::PluginCall;
 use crate::watchdog::CallTag;
 use crate::HostConfig;
 
+/// Longest a screenshot ([`Host::render_image`]) waits for the models and textures it draws
+/// to finish loading.
+pub const SCREENSHOT_LOAD_TIMEOUT: std::time::Duration = std::time::Duration::from_secs(120);
+
 /// What one frame did.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct FrameReport {
@@ -661,7 +665,10 @@ impl Host {
         Ok(stats)
     }
 
-    /// Draws the world into a `width` × `height` image with `system`.
+    /// Draws the world into a `width` × `height` image with `system`. Unlike a frame, it
+    /// waits for the models and textures it draws to finish loading (at most
+    /// [`SCREENSHOT_LOAD_TIMEOUT`]; a warning names what was still loading), so a
+    /// screenshot shows the final assets, not placeholders.
     pub fn render_image(
         &mut self,
         system: &mut crate::render::RenderSystem,
@@ -678,10 +685,12 @@ impl Host {
             return Err(crate::render::ScreenshotError::TooLarge { width, height, max });
         }
         let raised = self.state.io.events.len();
+        system.await_loads = Some(SCREENSHOT_LOAD_TIMEOUT);
         let image = {
             let (input, events) = self.state.render_input();
             crate::render::render_image_with_gui(system, input, events, width, height, &self.gui)
         };
+        system.await_loads = None;
         crate::console::trace_errors("render", &self.state.io.events[raised..]);
         let image = image?;
         self.record_render_stats(&system.renderer().stats());

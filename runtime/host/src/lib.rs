@@ -75,7 +75,7 @@ pub mod world;
 
 pub use assets::AssetRegistry;
 pub use headless_host::HeadlessHost;
-pub use host::{FrameReport, Host};
+pub use host::{FrameReport, Host, SCREENSHOT_LOAD_TIMEOUT};
 pub use host_config::{HostConfig, DEFAULT_MAX_EVENTS_PER_FRAME};
 pub use onyx_physics::PhysicsPreset;
 pub use physics::ScenePhysics;

@@ -4,28 +4,16 @@
 //! controlled (pause, speed, loop) from a plugin through `Ctx`. Skips, saying so, when the
 //! samples are absent.
 
-use std::path::PathBuf;
+mod common;
+
 use std::sync::{Arc, Mutex};
 
 use onyx_plugin_api::glam::{Quat, Vec3};
 use onyx_plugin_api::{Animator, Ctx, Entity, Flow, Name, Plugin, Transform};
 use onyx_runtime::HeadlessHost;
 
-fn samples() -> Option<PathBuf> {
-    let dir = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../../../shared/fixtures/gltf");
-    if dir.is_dir() {
-        Some(dir)
-    } else {
-        eprintln!(
-            "skipped: {} is absent (../shared/fixtures not beside the checkout)",
-            dir.display()
-        );
-        None
-    }
-}
-
 fn open(file: &str) -> Option<HeadlessHost> {
-    let dir = samples()?;
+    let dir = common::gltf_samples()?;
     let mut host = HeadlessHost::new();
     if let Err(error) = host.load_scene(&dir.join(file)) {
         panic!("{file}: {error}");
@@ -170,6 +158,35 @@ fn box_animated_moves_its_chain_and_turns_the_inner_box() {
         (angle - std::f32::consts::FRAC_PI_2).abs() < 1e-4 && r.x.abs() > 0.707,
         "rotation {r}: {angle} rad"
     );
+}
+
+#[test]
+fn a_paused_animator_leaves_the_entities_below_it_alone() {
+    let Some(mut host) = open("BoxAnimated/glTF-Binary/BoxAnimated.glb") else {
+        return;
+    };
+    pose_at(&mut host, "BoxAnimated", 0.625);
+    // A tool moves the animated node while the animation is paused: it stays moved.
+    let (node, _) = host
+        .find::<Transform>("node 0")
+        .unwrap_or_else(|| panic!("no node 0"));
+    let Some(e) = hecs::Entity::from_bits(node.to_bits()) else {
+        panic!("{node} is no hecs entity")
+    };
+    let moved = Transform::from_xyz(5.0, 6.0, 7.0);
+    if let Ok(mut stored) = host.host_mut().world_mut().get::<&mut Transform>(e) {
+        *stored = moved;
+    }
+    host.step(3);
+    assert_eq!(
+        transform(&host, "node 0").translation,
+        moved.translation,
+        "a paused animator rewrote its entities"
+    );
+    // Seeking poses it again.
+    pose_at(&mut host, "BoxAnimated", 0.625 / 2.0);
+    let y = transform(&host, "node 0").translation.y;
+    assert!((y - 0.63).abs() < 1e-4, "y {y}");
 }
 
 /// Drives the root's animator through `Ctx` as a game would: pauses it at frame 10, plays

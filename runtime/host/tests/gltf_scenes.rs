@@ -2,25 +2,14 @@
 //! as entities (hierarchy, names, transforms, cameras, lights) and spawned into a headless
 //! host. Skips, saying so, when the samples are absent.
 
-use std::path::{Path, PathBuf};
+mod common;
+
+use std::path::Path;
 
 use onyx_plugin_api::glam::{Quat, Vec3};
 use onyx_plugin_api::{Camera, Light, MeshRenderer, Name, Parent, Projection, Transform};
 use onyx_runtime::scene::{import_gltf_scene, GltfImportError, SceneEntity};
 use onyx_runtime::HeadlessHost;
-
-fn samples() -> Option<PathBuf> {
-    let dir = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../../../shared/fixtures/gltf");
-    if dir.is_dir() {
-        Some(dir)
-    } else {
-        eprintln!(
-            "skipped: {} is absent (../shared/fixtures not beside the checkout)",
-            dir.display()
-        );
-        None
-    }
-}
 
 fn import(path: &Path) -> (Vec<SceneEntity>, Vec<String>) {
     match import_gltf_scene(path, false) {
@@ -42,7 +31,9 @@ fn id_of(entities: &[SceneEntity], name: &str) -> Option<u64> {
 
 #[test]
 fn box_is_a_root_a_turned_node_and_its_mesh() {
-    let Some(dir) = samples() else { return };
+    let Some(dir) = common::gltf_samples() else {
+        return;
+    };
     for file in ["Box/glTF/Box.gltf", "Box/glTF-Binary/Box.glb"] {
         let (entities, warnings) = import(&dir.join(file));
         assert!(warnings.is_empty(), "{file}: {warnings:?}");
@@ -73,7 +64,9 @@ fn box_is_a_root_a_turned_node_and_its_mesh() {
 
 #[test]
 fn box_animated_keeps_both_root_nodes_and_the_chain_under_the_first() {
-    let Some(dir) = samples() else { return };
+    let Some(dir) = common::gltf_samples() else {
+        return;
+    };
     let (entities, _) = import(&dir.join("BoxAnimated/glTF-Binary/BoxAnimated.glb"));
     assert_eq!(entities.len(), 5, "{entities:#?}");
     let root = id_of(&entities, "BoxAnimated");
@@ -97,7 +90,9 @@ fn box_animated_keeps_both_root_nodes_and_the_chain_under_the_first() {
 
 #[test]
 fn cameras_become_a_perspective_and_an_orthographic_camera_the_first_active() {
-    let Some(dir) = samples() else { return };
+    let Some(dir) = common::gltf_samples() else {
+        return;
+    };
     for file in [
         "Cameras/glTF/Cameras.gltf",
         "Cameras/glTF-Embedded/Cameras.gltf",
@@ -131,7 +126,9 @@ fn cameras_become_a_perspective_and_an_orthographic_camera_the_first_active() {
 
 #[test]
 fn lamp_lights_are_point_lights_at_their_nodes_and_the_unknown_extension_warned_once() {
-    let Some(dir) = samples() else { return };
+    let Some(dir) = common::gltf_samples() else {
+        return;
+    };
     let (entities, warnings) = import(&dir.join("LightsPunctualLamp/glTF/LightsPunctualLamp.gltf"));
     let lights: Vec<(&str, Light, Transform)> = entities
         .iter()
@@ -166,7 +163,9 @@ fn lamp_lights_are_point_lights_at_their_nodes_and_the_unknown_extension_warned_
 
 #[test]
 fn orientation_test_nodes_keep_their_rotations() {
-    let Some(dir) = samples() else { return };
+    let Some(dir) = common::gltf_samples() else {
+        return;
+    };
     let path = dir.join("OrientationTest/glTF/OrientationTest.gltf");
     let json: serde_json::Value =
         serde_json::from_slice(&std::fs::read(&path).unwrap_or_else(|e| panic!("{e}")))
@@ -196,7 +195,9 @@ fn orientation_test_nodes_keep_their_rotations() {
 
 #[test]
 fn a_skinned_file_loads_in_bind_pose_with_one_warning_naming_skins() {
-    let Some(dir) = samples() else { return };
+    let Some(dir) = common::gltf_samples() else {
+        return;
+    };
     for file in [
         "CesiumMan/glTF/CesiumMan.gltf",
         "CesiumMan/glTF-Binary/CesiumMan.glb",
@@ -238,7 +239,9 @@ fn a_required_unknown_extension_is_a_clear_error() {
 
 #[test]
 fn a_gltf_scene_spawns_with_parents_world_poses_and_a_default_view() {
-    let Some(dir) = samples() else { return };
+    let Some(dir) = common::gltf_samples() else {
+        return;
+    };
     let path = dir.join("BoxAnimated/glTF/BoxAnimated.gltf");
     let mut host = HeadlessHost::new();
     // Root + 4 nodes + the default camera, sun and ambient light (the file has none).

@@ -87,6 +87,8 @@ mod gpu_init_error;
 mod graphics_event;
 /// Sky light, sun, point and spot lights, and their shadow settings.
 mod light;
+/// Model files and images read and decoded on worker threads, uploaded when done.
+mod loading;
 /// Object material (metallic-roughness, maps, alpha mode, shading mode).
 mod material;
 /// Meshes: data, procedural shapes, model files (OBJ, glTF), cache.
@@ -146,10 +148,11 @@ pub use light::{
     DirectionalLight, LightShadows, Lights, PointLight, SpotLight, MAX_POINT_LIGHTS,
     MAX_SPOT_LIGHTS,
 };
+pub use loading::{AssetLoader, Loaded};
 pub use material::Material;
 pub use mesh::{
-    ImportSettings, InvalidMeshError, MeshData, MeshHandle, Model, ModelLoadError, ModelPart,
-    ModelSource, NormalMode, PartSource, SubAsset, UpAxis, Vertex,
+    GltfFileLease, GltfFiles, ImportSettings, InvalidMeshError, MeshData, MeshHandle, Model,
+    ModelLoadError, ModelPart, ModelSource, NormalMode, PartSource, SubAsset, UpAxis, Vertex,
 };
 pub use model_material::{AlphaMode, ModelMaterial};
 pub use offscreen::{OffscreenTarget, OFFSCREEN_FORMAT};

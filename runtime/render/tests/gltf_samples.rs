@@ -10,19 +10,6 @@ use glam::{Mat4, Vec3};
 use onyx_render::model_material::{AlphaMode, ImageSource};
 use onyx_render::{ImportSettings, ModelLoadError, ModelSource};
 
-fn samples() -> Option<PathBuf> {
-    let dir = common::fixtures().join("gltf");
-    if dir.is_dir() {
-        Some(dir)
-    } else {
-        eprintln!(
-            "skipped: {} is absent (../shared/fixtures not beside the checkout)",
-            dir.display()
-        );
-        None
-    }
-}
-
 /// Every `.gltf` / `.glb` file under the samples folder.
 fn every_file(dir: &Path) -> Vec<PathBuf> {
     let mut out = Vec::new();
@@ -53,7 +40,9 @@ fn load(path: &Path) -> ModelSource {
 
 #[test]
 fn every_sample_in_every_variant_loads_and_names_each_unsupported_feature_once() {
-    let Some(dir) = samples() else { return };
+    let Some(dir) = common::fixture("gltf") else {
+        return;
+    };
     let files = every_file(&dir);
     assert!(files.len() >= 28, "found only {} glTF files", files.len());
     for path in &files {
@@ -85,7 +74,9 @@ fn every_sample_in_every_variant_loads_and_names_each_unsupported_feature_once()
 
 #[test]
 fn box_variants_give_twelve_triangles_turned_by_the_root_matrix() {
-    let Some(dir) = samples() else { return };
+    let Some(dir) = common::fixture("gltf") else {
+        return;
+    };
     // The root node's matrix (column-major in the file): +Y becomes -Z, +Z becomes +Y.
     let expected = Mat4::from_cols_array(&[
         1., 0., 0., 0., 0., 0., -1., 0., 0., 1., 0., 0., 0., 0., 0., 1.,
@@ -115,7 +106,9 @@ fn box_variants_give_twelve_triangles_turned_by_the_root_matrix() {
 
 #[test]
 fn sparse_accessor_values_replace_the_base_positions() {
-    let Some(dir) = samples() else { return };
+    let Some(dir) = common::fixture("gltf") else {
+        return;
+    };
     let gltf_path = dir.join("SimpleSparseAccessor/glTF/SimpleSparseAccessor.gltf");
     let json: serde_json::Value =
         serde_json::from_slice(&std::fs::read(&gltf_path).unwrap_or_default())
@@ -173,7 +166,9 @@ fn sparse_accessor_values_replace_the_base_positions() {
 
 #[test]
 fn damaged_helmet_carries_every_metallic_roughness_slot() {
-    let Some(dir) = samples() else { return };
+    let Some(dir) = common::fixture("gltf") else {
+        return;
+    };
     for file in [
         "DamagedHelmet/glTF/DamagedHelmet.gltf",
         "DamagedHelmet/glTF-Binary/DamagedHelmet.glb",
@@ -208,7 +203,9 @@ fn damaged_helmet_carries_every_metallic_roughness_slot() {
 
 #[test]
 fn alpha_modes_and_texture_transforms_are_read() {
-    let Some(dir) = samples() else { return };
+    let Some(dir) = common::fixture("gltf") else {
+        return;
+    };
     let alpha = load(&dir.join("AlphaBlendModeTest/glTF/AlphaBlendModeTest.gltf"));
     let modes: Vec<AlphaMode> = alpha.parts.iter().map(|p| p.material.alpha_mode).collect();
     assert!(
@@ -229,7 +226,9 @@ fn alpha_modes_and_texture_transforms_are_read() {
 
 #[test]
 fn skins_and_morph_targets_load_in_bind_pose_with_one_warning() {
-    let Some(dir) = samples() else { return };
+    let Some(dir) = common::fixture("gltf") else {
+        return;
+    };
     let skinned = load(&dir.join("CesiumMan/glTF/CesiumMan.gltf"));
     assert_eq!(
         skinned

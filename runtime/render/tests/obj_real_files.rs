@@ -14,16 +14,7 @@ use onyx_render::{
 
 /// The OBJ fixtures, or `None` (the test then skips, saying so).
 fn fixture(relative: &str) -> Option<PathBuf> {
-    let path = common::fixtures().join("obj").join(relative);
-    if path.exists() {
-        Some(path)
-    } else {
-        eprintln!(
-            "skipped: {} is absent (../shared/fixtures not beside the checkout)",
-            path.display()
-        );
-        None
-    }
+    common::fixture(&format!("obj/{relative}"))
 }
 
 fn load(path: &Path) -> ModelSource {

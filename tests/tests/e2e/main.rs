@@ -1,6 +1,8 @@
 //! End-to-end tests of the host with real plugins. One test binary (one link of the
 //! runtime), one module per area.
 
+mod asset_loading;
+mod asset_reload;
 mod cli;
 mod ctx_api;
 mod dev_loop;

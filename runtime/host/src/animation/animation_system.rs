@@ -10,16 +10,19 @@ use super::animation_clip::{AnimationClip, Property};
 use super::clip_reader::read_clip;
 use crate::world::WorldState;
 
-/// The clips read so far (each once; a file that fails is reported once and plays nothing).
+/// The clips read so far (each once; a file that fails is reported once and plays nothing),
+/// and the clip and time each animator last posed its entities at.
 #[derive(Debug, Default)]
 pub struct AnimationSystem {
     clips: HashMap<AnimationId, Option<Arc<AnimationClip>>>,
+    posed: HashMap<hecs::Entity, (AnimationId, u32)>,
 }
 
 impl AnimationSystem {
     /// Advances each playing animator by `dt` seconds × its speed (looping, or stopping at an
-    /// end), then poses the entities its channels name, whether it plays or not (a paused
-    /// animator holds its pose; setting its time seeks).
+    /// end), then poses the entities its channels name when its clip or time changed since
+    /// it last did (a paused animator writes nothing, so the entities below it are left
+    /// alone; setting its time seeks).
     pub fn advance(&mut self, world: &mut WorldState, dt: f32) {
         let animators: Vec<(hecs::Entity, Animator)> = world
             .ecs
@@ -27,6 +30,7 @@ impl AnimationSystem {
             .iter()
             .map(|(e, a)| (e, *a))
             .collect();
+        let mut last = std::mem::take(&mut self.posed);
         for (entity, mut animator) in animators {
             let Some(clip) = self.clip(animator.clip, world) else {
                 continue;
@@ -38,7 +42,11 @@ impl AnimationSystem {
                     *stored = animator;
                 }
             }
-            pose(world, entity, &clip, animator.time);
+            let at = (animator.clip, animator.time.to_bits());
+            if last.remove(&entity) != Some(at) {
+                pose(world, entity, &clip, animator.time);
+            }
+            self.posed.insert(entity, at);
         }
     }
 

@@ -2,6 +2,8 @@
 //!
 //! - `render_system.rs`: [`RenderSystem`], the renderer and the per-frame scene it draws from
 //!   a `RenderInput`.
+//! - `render_assets.rs`: `RenderAssets`, the GPU copies of the registered models and textures,
+//!   loaded on worker threads and uploaded by the frame when done.
 //! - `render_with_gui.rs`: the scene and the plugins' GUIs drawn together (`GuiGpu` per
 //!   renderer).
 //! - `previous_pose.rs`: `PreviousPose`, world poses of the previous fixed step, for
@@ -11,12 +13,15 @@
 //! - `screenshot.rs`: saving a PNG, [`ScreenshotError`].
 //! - `active_camera.rs`: `active_camera`, the camera the world is seen through;
 //!   `screen_ray.rs`: `screen_ray`, the ray under a pixel (click-to-select).
+//! - `asset_watcher.rs`: `AssetWatcher`, notices edited model and texture files (hot reload).
 //! - `shader_watcher.rs`: `ShaderWatcher`, recompiles edited shaders (hot reload), and
 //!   `shader_dir`, the source checkout's shader folder.
 
 mod active_camera;
+mod asset_watcher;
 mod orbit_camera;
 pub(crate) mod previous_pose;
+mod render_assets;
 mod render_system;
 mod render_with_gui;
 mod screen_ray;

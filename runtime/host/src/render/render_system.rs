@@ -1,19 +1,20 @@
 //! [`RenderSystem`]: draws the world with onyx-render.
 
-use std::collections::HashMap;
+use std::time::Duration;
 
 use onyx_plugin_api::glam::{Affine3A, Mat4, Vec3};
 use onyx_plugin_api::{
-    AlphaMode, Event, GraphicsEvent, Light, MeshId, MeshRenderer, ShadingMode, TextureId, Transform,
+    AlphaMode, Event, GraphicsEvent, Light, MeshId, MeshRenderer, ShadingMode, Transform,
 };
-use onyx_render::mesh::{Model, ModelPart};
 use onyx_render::{
     DebugCategories, DebugLine, DirectionalLight, DrawObject, LightShadows, Lights, PointLight,
     RenderError, RenderScene, RenderSettings, RenderStats, RenderTarget, Renderer,
-    RendererInitError, SpotLight, TextureHandle,
+    RendererInitError, SpotLight,
 };
 
+use super::asset_watcher::AssetWatcher;
 use super::previous_pose::{interpolate, PreviousPose};
+use super::render_assets::RenderAssets;
 use super::{ShaderWatcher, ViewState};
 use crate::assets::AssetRegistry;
 use crate::physics::PhysicsSystem;
@@ -70,15 +71,21 @@ pub struct RenderInput<'a> {
 }
 
 /// A renderer plus what the host keeps to feed it: the GPU copies of the registered models
-/// and textures, and buffers reused every frame (no per-object allocation per frame).
+/// and textures (loaded off the frame thread: a model is drawn once it is uploaded, a texture
+/// shows the missing-texture checker until then), and buffers reused every frame (no
+/// per-object allocation per frame).
 pub struct RenderSystem {
     renderer: Renderer,
-    models: HashMap<MeshId, Model>,
-    textures: HashMap<TextureId, TextureHandle>,
+    assets: RenderAssets,
+    /// Set while drawing a screenshot: every asset the frame draws is waited for (at most
+    /// this long), so the image shows the final assets.
+    pub(crate) await_loads: Option<Duration>,
     rows: Vec<(Affine3A, MeshRenderer)>,
     objects: Vec<DrawObject>,
     lines: Vec<DebugLine>,
     shader_watcher: Option<ShaderWatcher>,
+    /// Watches the drawn assets' files, with the asset generation it watches for.
+    asset_watcher: Option<(AssetWatcher, u64)>,
     /// Whether the editor grid is drawn.
     pub grid: bool,
     /// Whether physics debug lines (collider outlines, contacts, normals) are drawn.
@@ -139,13 +146,14 @@ impl RenderSystem {
     /// A render system drawing with `renderer`.
     pub fn new(renderer: Renderer) -> Self {
         Self {
+            assets: RenderAssets::new(&renderer),
+            await_loads: None,
             renderer,
-            models: HashMap::new(),
-            textures: HashMap::new(),
             rows: Vec::new(),
             objects: Vec::new(),
             lines: Vec::new(),
             shader_watcher: None,
+            asset_watcher: None,
             grid: true,
             physics_debug: false,
             gui: super::GuiGpu::default(),
@@ -161,6 +169,35 @@ impl RenderSystem {
             tracing::info!(dir = %dir.display(), "watching shaders");
         }
         Ok(())
+    }
+
+    /// Loads a model or texture again whenever its file changes on disk (a model also
+    /// when a material library, image or buffer beside it changes). What is drawn is kept
+    /// until the new version is uploaded, and kept for good if it fails to load (a
+    /// graphics event says why).
+    pub fn watch_assets(&mut self) -> Result<(), notify::Error> {
+        self.asset_watcher = Some((AssetWatcher::new()?, u64::MAX));
+        Ok(())
+    }
+
+    /// Loads again the assets whose files changed.
+    fn poll_asset_files(&mut self, registry: &AssetRegistry) {
+        if let Some((watcher, _)) = &mut self.asset_watcher {
+            for key in watcher.poll() {
+                self.assets.reload(key, registry);
+            }
+        }
+    }
+
+    /// Watches the files of the assets on the GPU, when they changed (after the uploads of
+    /// a frame, so an edit right after the first frame that shows an asset is seen).
+    fn watch_asset_files(&mut self, registry: &AssetRegistry) {
+        if let Some((watcher, watched)) = &mut self.asset_watcher {
+            if *watched != self.assets.generation() {
+                watcher.watch(&self.assets.files(registry));
+                *watched = self.assets.generation();
+            }
+        }
     }
 
     fn poll_shaders(&mut self, events: &mut Vec<Event>) {
@@ -205,72 +242,9 @@ impl RenderSystem {
         &mut self.renderer
     }
 
-    /// Makes sure the model of `id` is on the GPU; `false` for an unknown id.
-    fn ensure_model(
-        &mut self,
-        id: MeshId,
-        assets: &AssetRegistry,
-        events: &mut Vec<Event>,
-    ) -> bool {
-        if !self.models.contains_key(&id) {
-            let builtin = self.renderer.builtin_meshes();
-            let mesh = match id {
-                MeshId::CUBE => Some(builtin.cube),
-                MeshId::SPHERE => Some(builtin.sphere),
-                MeshId::PLANE => Some(builtin.plane),
-                MeshId::CAPSULE => Some(builtin.capsule),
-                MeshId::CYLINDER => Some(builtin.cylinder),
-                _ => None,
-            };
-            let model = match (mesh, assets.mesh_path(id)) {
-                (Some(mesh), _) => Model {
-                    parts: vec![ModelPart::new(
-                        "builtin",
-                        mesh,
-                        onyx_render::Material::color(1.0, 1.0, 1.0),
-                    )],
-                },
-                (None, Some(path)) => {
-                    let settings = assets.import_settings(path);
-                    let path = assets.resolve(path);
-                    let (model, problems) = self.renderer.load_model_with(&path, &settings);
-                    for problem in problems {
-                        events.push(Event::Graphics(GraphicsEvent::AssetFailed {
-                            path: path.display().to_string(),
-                            message: problem.to_string(),
-                        }));
-                    }
-                    model
-                }
-                (None, None) => return false,
-            };
-            self.models.insert(id, model);
-        }
-        true
-    }
-
-    fn texture(
-        &mut self,
-        id: TextureId,
-        assets: &AssetRegistry,
-        events: &mut Vec<Event>,
-    ) -> Option<TextureHandle> {
-        if id == TextureId::NONE {
-            return None;
-        }
-        if let Some(handle) = self.textures.get(&id) {
-            return Some(*handle);
-        }
-        let path = assets.resolve(assets.texture_path(id)?);
-        let (handle, problem) = self.renderer.load_texture_or_fallback(&path);
-        if let Some(problem) = problem {
-            events.push(Event::Graphics(GraphicsEvent::AssetFailed {
-                path: path.display().to_string(),
-                message: problem.to_string(),
-            }));
-        }
-        self.textures.insert(id, handle);
-        Some(handle)
+    /// Loads in flight (models and textures being read and decoded off the frame thread).
+    pub fn pending_loads(&self) -> usize {
+        self.assets.pending()
     }
 
     /// Draws the world into `target`: every visible [`MeshRenderer`] at its world pose
@@ -302,6 +276,8 @@ impl RenderSystem {
             physics,
             alpha,
         } = input;
+        self.poll_asset_files(&world.assets);
+        self.assets.upload_finished(&mut self.renderer, events);
         let camera = super::active_camera(world, view);
         let lights = Self::lights(world);
         let mut rows = std::mem::take(&mut self.rows);
@@ -309,15 +285,26 @@ impl RenderSystem {
         drawn_poses(world, alpha, |_, pose, renderer| {
             rows.push((pose, *renderer))
         });
+        let assets = &world.assets;
+        if let Some(timeout) = self.await_loads {
+            for (_, renderer) in &rows {
+                self.assets
+                    .texture(renderer.material.texture, &self.renderer, assets);
+                self.assets.model(renderer.mesh, &self.renderer, assets);
+            }
+            self.assets
+                .finish_loading(&mut self.renderer, events, timeout);
+        }
         self.objects.clear();
         let shading_override = view.overrides.shading.into_option();
         for &(pose, renderer) in &rows {
             let matrix = Mat4::from(pose);
-            let texture = self.texture(renderer.material.texture, &world.assets, events);
-            if !self.ensure_model(renderer.mesh, &world.assets, events) {
+            let texture = self
+                .assets
+                .texture(renderer.material.texture, &self.renderer, assets);
+            let Some(model) = self.assets.model(renderer.mesh, &self.renderer, assets) else {
                 continue;
-            }
-            let model = &self.models[&renderer.mesh];
+            };
             let builtin = MeshId::BUILTIN.iter().any(|(id, _)| *id == renderer.mesh);
             let shading = to_render_shading(shading_override.unwrap_or(renderer.material.shading));
             for part in &model.parts {
@@ -332,6 +319,7 @@ impl RenderSystem {
             }
         }
         self.rows = rows;
+        self.watch_asset_files(assets);
         self.lines.clear();
         self.lines.extend(
             debug_lines.iter().map(|l| {

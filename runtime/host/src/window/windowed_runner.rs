@@ -90,6 +90,9 @@ fn window_graphics(
     if let Err(error) = system.watch_shaders() {
         tracing::warn!("shader changes will not be picked up: {error}");
     }
+    if let Err(error) = system.watch_assets() {
+        tracing::warn!("model and texture changes will not be picked up: {error}");
+    }
     Ok(WindowGraphics { system, target })
 }
 

@@ -8,10 +8,11 @@ use super::mesh_data::MeshData;
 use super::mesh_handle::MeshHandle;
 use super::model::Model;
 
-/// Uploaded meshes (indexed by [`MeshHandle`]) and models loaded from files.
+/// Uploaded meshes (indexed by [`MeshHandle`]; `None` once released) and models loaded from
+/// files.
 #[derive(Debug, Default)]
 pub(crate) struct MeshCache {
-    meshes: Vec<GpuMesh>,
+    meshes: Vec<Option<GpuMesh>>,
     models: HashMap<PathBuf, Model>,
 }
 
@@ -32,12 +33,36 @@ impl MeshCache {
             with_tangents.generate_tangents();
             GpuMesh::upload(device, storage_layout, &with_tangents, label)
         };
-        self.meshes.push(upload);
+        self.meshes.push(Some(upload));
+        handle
+    }
+
+    /// Uploads a valid mesh as it is (without tangents, if it has none).
+    pub(crate) fn add_as_is(
+        &mut self,
+        device: &wgpu::Device,
+        storage_layout: &wgpu::BindGroupLayout,
+        data: &MeshData,
+        label: &str,
+    ) -> MeshHandle {
+        let handle = MeshHandle(self.meshes.len() as u32);
+        self.meshes
+            .push(Some(GpuMesh::upload(device, storage_layout, data, label)));
         handle
     }
 
     pub(crate) fn get(&self, handle: MeshHandle) -> Option<&GpuMesh> {
-        self.meshes.get(handle.0 as usize)
+        self.meshes.get(handle.0 as usize)?.as_ref()
+    }
+
+    /// Frees the GPU buffers of `handle` (a model replaced by a reload); the handle then
+    /// draws nothing, and a model cached with it is forgotten.
+    pub(crate) fn release(&mut self, handle: MeshHandle) {
+        if let Some(slot) = self.meshes.get_mut(handle.0 as usize) {
+            *slot = None;
+        }
+        self.models
+            .retain(|_, model| model.parts.iter().all(|p| p.mesh != handle));
     }
 
     pub(crate) fn len(&self) -> usize {
@@ -46,7 +71,7 @@ impl MeshCache {
 
     /// Bytes of every mesh's GPU buffers.
     pub(crate) fn bytes(&self) -> u64 {
-        self.meshes.iter().map(GpuMesh::bytes).sum()
+        self.meshes.iter().flatten().map(GpuMesh::bytes).sum()
     }
 
     pub(crate) fn model(&self, key: &Path) -> Option<&Model> {

@@ -43,6 +43,7 @@ mod vertex;
 
 pub use gltf::catch_gltf_panics;
 pub use gltf::load_gltf_buffers;
+pub use gltf::{GltfFileLease, GltfFiles};
 pub use import_settings::ImportSettings;
 pub use invalid_mesh_error::InvalidMeshError;
 pub(crate) use mesh_cache::{cache_key, MeshCache};
@@ -67,7 +68,7 @@ pub fn load_model_geometry(
     path: &std::path::Path,
     settings: &ImportSettings,
 ) -> Result<MeshData, ModelLoadError> {
-    let model = load_model_source(path, settings)?;
+    let model = load_model_source(path, settings, None)?;
     let mut merged = MeshData::default();
     for part in model.parts {
         let base = merged.vertices.len() as u32;

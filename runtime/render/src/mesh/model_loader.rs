@@ -2,6 +2,7 @@
 
 use std::path::Path;
 
+use super::gltf::GltfFileLease;
 use super::import_settings::ImportSettings;
 use super::model_load_error::ModelLoadError;
 use super::model_source::ModelSource;
@@ -9,16 +10,18 @@ use super::sub_asset::SubAsset;
 
 /// Reads the model at `path` (images not decoded): `.gltf` and `.glb` through the glTF
 /// reader, one mesh of one when the path names it ([`SubAsset::Mesh`], `file.glb#mesh/N`);
-/// anything else as OBJ (a file that is not names the line that is not OBJ).
+/// anything else as OBJ (a file that is not names the line that is not OBJ). A glTF file
+/// `lease` holds is read once for every load holding it.
 pub(crate) fn load_model_source(
     path: &Path,
     settings: &ImportSettings,
+    lease: Option<&GltfFileLease>,
 ) -> Result<ModelSource, ModelLoadError> {
     if let (file, Some(SubAsset::Mesh(index))) = SubAsset::split(path) {
-        return super::gltf::load_gltf_mesh_source(&file, index, settings);
+        return super::gltf::load_gltf_mesh_source(&file, index, settings, lease);
     }
     if is_gltf(path) {
-        super::gltf::load_gltf_source(path, settings)
+        super::gltf::load_gltf_source(path, settings, lease)
     } else {
         super::obj::load_obj_source(path, settings)
     }

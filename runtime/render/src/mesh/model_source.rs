@@ -3,15 +3,17 @@
 
 use std::collections::HashMap;
 use std::path::{Path, PathBuf};
+use std::sync::Arc;
 
 use glam::Mat4;
 
+use super::gltf::{GltfFile, GltfFileLease};
 use super::import_settings::ImportSettings;
 use super::mesh_data::MeshData;
 use super::model_load_error::ModelLoadError;
 use crate::asset_io::AssetWarning;
 use crate::model_material::{ImageSource, ModelMaterial};
-use crate::texture::{decode_texture, decode_texture_bytes, TextureSource};
+use crate::texture::{decode_texture, TextureSource};
 
 /// One mesh of a model with its material and its place in the model.
 #[derive(Clone, Debug)]
@@ -37,15 +39,17 @@ pub struct ModelSource {
     pub path: PathBuf,
     /// Parts, in file order.
     pub parts: Vec<PartSource>,
-    /// Decoded images by source, each decoded once however many parts use it; `None` for
-    /// one that failed (its error is in `problems`).
-    pub images: HashMap<ImageSource, Option<TextureSource>>,
+    /// Decoded images by source, each decoded once however many parts (and, for a glTF
+    /// file, however many of its meshes) use it; `None` for one that failed (its error is in
+    /// `problems`).
+    pub images: HashMap<ImageSource, Option<Arc<TextureSource>>>,
     /// Problems that leave something to draw (missing MTL, failed texture), each once.
     pub problems: Vec<ModelLoadError>,
     /// Oddities worked around, each kind once.
     pub warnings: Vec<AssetWarning>,
-    /// Encoded bytes of images stored inside the model file, until decoded.
-    pub(crate) encoded: HashMap<ImageSource, Vec<u8>>,
+    /// The glTF file the model was read from, whose images it decodes (shared with the
+    /// file's other meshes).
+    pub(crate) gltf: Option<Arc<GltfFile>>,
 }
 
 impl ModelSource {
@@ -61,7 +65,7 @@ impl ModelSource {
             images: HashMap::new(),
             problems,
             warnings,
-            encoded: HashMap::new(),
+            gltf: None,
         }
     }
 
@@ -75,7 +79,22 @@ impl ModelSource {
         settings: &ImportSettings,
         max_texture_side: u32,
     ) -> Result<Self, ModelLoadError> {
-        let mut source = super::load_model_source(path, settings)?;
+        Self::load_leased(path, settings, max_texture_side, None)
+    }
+
+    /// [`ModelSource::load`] of a model whose glTF file `lease` holds: the file is read
+    /// and each of its images decoded once for every load holding the same file
+    /// (`file.glb#mesh/N` for many `N`).
+    ///
+    /// # Errors
+    /// As [`ModelSource::load`].
+    pub fn load_leased(
+        path: &Path,
+        settings: &ImportSettings,
+        max_texture_side: u32,
+        lease: Option<&GltfFileLease>,
+    ) -> Result<Self, ModelLoadError> {
+        let mut source = super::load_model_source(path, settings, lease)?;
         source.decode_images(max_texture_side);
         for warning in &source.warnings {
             tracing::warn!("{warning}");
@@ -100,12 +119,9 @@ impl ModelSource {
                 if self.images.contains_key(&slot.image) {
                     continue;
                 }
-                let result = match self.encoded.remove(&slot.image) {
-                    Some(bytes) => {
-                        let name = std::path::PathBuf::from(slot.image.to_string());
-                        decode_texture_bytes(&bytes, &name, max_side)
-                    }
-                    None => decode_texture(&slot.image, max_side),
+                let result = match &self.gltf {
+                    Some(file) => file.decoded_image(&slot.image, max_side),
+                    None => decode_texture(&slot.image, max_side).map(Arc::new),
                 };
                 let decoded = match result {
                     Ok(texture) => {
@@ -124,6 +140,17 @@ impl ModelSource {
                     }
                 };
                 self.images.insert(slot.image.clone(), decoded);
+            }
+        }
+    }
+
+    /// Generates the tangents of every part that has a normal map and no tangents
+    /// (MikkTSpace: the slow part of an upload, so a loader thread does it rather than the
+    /// frame; without a normal map tangents are never read).
+    pub fn generate_tangents(&mut self) {
+        for part in &mut self.parts {
+            if part.material.normal_texture.is_some() && !part.mesh.has_tangents() {
+                part.mesh.generate_tangents();
             }
         }
     }

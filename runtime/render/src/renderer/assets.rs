@@ -144,6 +144,45 @@ impl Renderer {
             .insert(self.gpu.device(), self.gpu.queue(), source, texture, linear)
     }
 
+    /// Uploads `texture` in place of the texture `handle` names (its file changed on disk):
+    /// every material drawn with the handle shows the new image from the next frame.
+    pub fn replace_texture(
+        &mut self,
+        handle: TextureHandle,
+        texture: &TextureSource,
+        linear: bool,
+    ) {
+        self.textures
+            .replace(self.gpu.device(), self.gpu.queue(), handle, texture, linear);
+    }
+
+    /// Frees the GPU buffers of a model's meshes (a model replaced by a reload; its handles
+    /// draw nothing after) and forgets the images its materials were uploaded from, so the
+    /// next upload of the same file takes its images anew. The textures themselves stay
+    /// (other models may draw with them).
+    pub fn release_model(&mut self, model: &Model) {
+        let b = &self.builtin;
+        let builtins = [b.cube, b.sphere, b.plane, b.capsule, b.cylinder];
+        for part in &model.parts {
+            if !builtins.contains(&part.mesh) {
+                self.meshes.release(part.mesh);
+            }
+            let m = &part.file_material;
+            for slot in [
+                &m.base_color_texture,
+                &m.metallic_roughness_texture,
+                &m.normal_texture,
+                &m.occlusion_texture,
+                &m.emissive_texture,
+            ]
+            .into_iter()
+            .flatten()
+            {
+                self.textures.forget(&slot.image);
+            }
+        }
+    }
+
     /// Like [`Renderer::load_texture`], but a failure gives the magenta checker
     /// ([`Renderer::fallback_texture`]) along with the error, so drawing can go on. A file
     /// that failed before fails again without being read, and without an error (it was
@@ -264,8 +303,8 @@ impl Renderer {
         Ok((model, problems))
     }
 
-    /// Uploads a model read on the CPU: its meshes (tangents generated where the file has
-    /// none), its decoded images (each once per renderer and colour space) and its materials,
+    /// Uploads a model read on the CPU: its meshes (tangents generated where a part has a
+    /// normal map and the file gives none), its decoded images (each once per renderer and colour space) and its materials,
     /// drawn physically based with every map, alpha mode and sidedness the file gives. A part
     /// whose base colour texture or material library failed shows the missing-texture
     /// placeholder; a failed data map (normal, …) is left out. Returns the
@@ -286,11 +325,20 @@ impl Renderer {
             }
         }
         let mut parts = Vec::with_capacity(sources.len());
-        for part in sources {
+        for mut part in sources {
             let label = format!("{}#{}", path.display(), part.name);
-            let Ok(mesh) = self.add_mesh(&part.mesh, &label) else {
+            // Tangents are read only with a normal map (the shader uses the geometric
+            // normal without one): generated here when a loader thread has not.
+            if part.material.normal_texture.is_some() && !part.mesh.has_tangents() {
+                part.mesh.generate_tangents();
+            }
+            if !part.mesh.is_valid() {
                 continue;
-            };
+            }
+            let storage = &self.pipelines.layouts().mesh_storage;
+            let mesh = self
+                .meshes
+                .add_as_is(self.gpu.device(), storage, &part.mesh, &label);
             let mut file_material = part.material;
             let mut upload = |slot: &mut Option<crate::model_material::TextureRef>,
                               linear: bool| {

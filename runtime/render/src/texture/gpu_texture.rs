@@ -73,6 +73,14 @@ impl GpuTexture {
         Self { texture, view }
     }
 
+    /// Bytes of texel data of every mip level.
+    pub(crate) fn bytes(&self) -> u64 {
+        let (w, h) = self.size();
+        (0..self.texture.mip_level_count())
+            .map(|level| u64::from((w >> level).max(1)) * u64::from((h >> level).max(1)) * 4)
+            .sum()
+    }
+
     /// Width and height of mip level 0, pixels.
     pub(crate) fn size(&self) -> (u32, u32) {
         (self.texture.width(), self.texture.height())

@@ -122,6 +122,42 @@ impl TextureCache {
         handle
     }
 
+    /// Uploads `texture` in place of the texture `handle` names (its file changed): every
+    /// material using the handle shows the new image from the next frame.
+    pub(crate) fn replace(
+        &mut self,
+        device: &wgpu::Device,
+        queue: &wgpu::Queue,
+        handle: TextureHandle,
+        texture: &TextureSource,
+        linear: bool,
+    ) {
+        let Some(slot) = self.textures.get_mut(handle.0 as usize) else {
+            return;
+        };
+        let label = format!("reloaded texture {}", handle.0);
+        let old = std::mem::replace(
+            slot,
+            GpuTexture::upload(device, queue, &texture.levels, &label, linear),
+        );
+        self.bytes -= old.bytes().min(self.bytes);
+        self.bytes += texture
+            .levels
+            .iter()
+            .map(|l| u64::from(l.width()) * u64::from(l.height()) * 4)
+            .sum::<u64>();
+        // Bind groups hold the old view.
+        self.material_groups.clear();
+    }
+
+    /// Forgets which texture `source` was uploaded as (both colour spaces) and that it
+    /// failed: the next upload of it makes a new texture (its file changed).
+    pub(crate) fn forget(&mut self, source: &ImageSource) {
+        let key = canonical(source);
+        self.by_source.retain(|(s, _), _| *s != key);
+        self.failed.remove(&key);
+    }
+
     /// Records that `source` failed; `true` the first time (report it then, only then).
     pub(crate) fn mark_failed(&mut self, source: &ImageSource) -> bool {
         self.failed.insert(canonical(source))

@@ -70,6 +70,21 @@ pub fn fixtures() -> PathBuf {
     PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../../../shared/fixtures")
 }
 
+/// `relative` under the shared fixtures (`gltf`, `obj/x.obj`), or `None` when it is absent
+/// (the test then skips, saying so).
+pub fn fixture(relative: &str) -> Option<PathBuf> {
+    let path = fixtures().join(relative);
+    if path.exists() {
+        Some(path)
+    } else {
+        eprintln!(
+            "skipped: {} is absent (../shared/fixtures not beside the checkout)",
+            path.display()
+        );
+        None
+    }
+}
+
 /// Renders `scene` offscreen and reads it back.
 pub fn render_image(
     renderer: &mut Renderer,

@@ -1,69 +1,30 @@
 //! [`load_gltf_source`]: a glTF or GLB file into a [`ModelSource`] on the CPU.
 
 use std::collections::HashSet;
-use std::path::Path;
+use std::sync::Arc;
 
 use glam::{Mat4, Quat, Vec3};
 
-use super::gltf_buffers::{image_bytes, load_buffers};
+use super::gltf_file::{GltfFile, SUPPORTED_EXTENSIONS};
 use super::gltf_material::convert_material;
 use super::gltf_primitive::{read_primitive, Primitive};
-use crate::asset_io::{read_asset_file, AssetWarning, MAX_ASSET_FILE_BYTES};
+use crate::asset_io::AssetWarning;
 use crate::mesh::import_settings::ImportSettings;
 use crate::mesh::model_load_error::ModelLoadError;
 use crate::mesh::model_source::{ModelSource, PartSource};
 use crate::mesh::up_axis::UpAxis;
-use crate::model_material::{ImageSource, ModelMaterial, UvTransform};
+use crate::model_material::{ModelMaterial, UvTransform};
 
-/// Extensions whose data Onyx reads.
-const SUPPORTED_EXTENSIONS: [&str; 4] = [
-    "KHR_lights_punctual",
-    "KHR_texture_transform",
-    "KHR_materials_emissive_strength",
-    "KHR_materials_unlit",
-];
-
-/// Reads a glTF 2.0 file: the default scene's (else the first scene's, else every root
+/// Reads a glTF 2.0 file (read by [`GltfFile::read`], which refuses an extension the file
+/// requires that Onyx lacks): the default scene's (else the first scene's, else every root
 /// node's) meshes, one part per triangle primitive at its node's world transform, with its
-/// material. An extension the file requires that Onyx lacks is an error; one it merely uses
-/// is warned once; skins and morph targets load in their bind pose with one warning each.
+/// material. An extension the file merely uses is warned once; skins and morph targets load in their bind pose with one warning each.
 pub(crate) fn load_gltf_source(
-    path: &Path,
+    file: &Arc<GltfFile>,
     settings: &ImportSettings,
 ) -> Result<ModelSource, ModelLoadError> {
-    let bytes =
-        read_asset_file(path, MAX_ASSET_FILE_BYTES).map_err(|source| ModelLoadError::Read {
-            path: path.to_owned(),
-            source,
-        })?;
-    let gltf_error = |message: String| ModelLoadError::Gltf {
-        path: path.to_owned(),
-        message,
-    };
-    // A UTF-8 byte-order mark is not JSON; some exporters write one.
-    let body = bytes.strip_prefix(&[0xEF, 0xBB, 0xBF]).unwrap_or(&bytes);
-    let invalid = |e: gltf::Error| {
-        gltf_error(format!(
-            "it is not a valid glTF 2.0 file ({e}); re-export it"
-        ))
-    };
-    // Required extensions first: the crate's validation refuses ones it lacks with a
-    // message that does not say what to do.
-    let unchecked = gltf::Gltf::from_slice_without_validation(body).map_err(invalid)?;
-    if let Some(extension) = unchecked
-        .document
-        .extensions_required()
-        .find(|e| !SUPPORTED_EXTENSIONS.contains(e))
-    {
-        return Err(ModelLoadError::RequiredExtension {
-            path: path.to_owned(),
-            extension: extension.to_owned(),
-        });
-    }
-    drop(unchecked);
-    // Validated: every index the document holds names something that exists.
-    let gltf = gltf::Gltf::from_slice(body).map_err(invalid)?;
-    let document = &gltf.document;
+    let path = file.path.as_path();
+    let document = &file.document;
     let mut warnings = Vec::new();
     for extension in document
         .extensions_used()
@@ -99,8 +60,7 @@ pub(crate) fn load_gltf_source(
             "animations are not played when the file is drawn as one model",
         ));
     }
-    let folder = path.parent().unwrap_or(Path::new(""));
-    let buffers = load_buffers(document, gltf.blob.as_deref(), folder).map_err(gltf_error)?;
+    let buffers = &file.buffers;
     let materials: Vec<ModelMaterial> = document
         .materials()
         .map(|m| convert_material(&m, path))
@@ -149,7 +109,7 @@ pub(crate) fn load_gltf_source(
                     .base_color_texture
                     .as_ref()
                     .map_or((0, UvTransform::IDENTITY), |t| (t.uv_set, t.transform));
-                match read_primitive(&primitive, &buffers, uv_set, uv) {
+                match read_primitive(&primitive, buffers, uv_set, uv) {
                     Primitive::Mesh(data) => parts.push(PartSource {
                         name: node
                             .name()
@@ -192,38 +152,8 @@ pub(crate) fn load_gltf_source(
         });
     }
     let mut source = ModelSource::new(path.to_owned(), parts, Vec::new(), warnings);
-    // Images inside the file: their encoded bytes, decoded with the others.
-    for image in document.images() {
-        let key = ImageSource::Embedded {
-            model: path.to_owned(),
-            index: image.index(),
-        };
-        let used = source.parts.iter().any(|p| {
-            let m = &p.material;
-            [
-                &m.base_color_texture,
-                &m.metallic_roughness_texture,
-                &m.normal_texture,
-                &m.occlusion_texture,
-                &m.emissive_texture,
-            ]
-            .into_iter()
-            .flatten()
-            .any(|t| t.image == key)
-        });
-        if used {
-            match image_bytes(&image, &buffers, folder) {
-                Ok(bytes) => {
-                    source.encoded.insert(key, bytes);
-                }
-                Err(message) => source.warnings.push(AssetWarning::new(
-                    path,
-                    None,
-                    format!("image {}: {message}", image.index()),
-                )),
-            }
-        }
-    }
+    // Images inside the file are decoded from it, with the others.
+    source.gltf = Some(file.clone());
     tracing::debug!(path = %path.display(), parts = source.parts.len(), "glTF read");
     Ok(source)
 }

@@ -1,59 +1,46 @@
 //! [`load_gltf_mesh_source`]: one mesh of a glTF file (`file.glb#mesh/N`) as a
 //! [`ModelSource`], for scenes whose entities each draw one mesh of the file.
 
-use std::path::Path;
+use std::sync::Arc;
 
 use glam::{Mat4, Vec3};
 
-use super::gltf_buffers::{image_bytes, load_buffers};
+use super::gltf_file::GltfFile;
 use super::gltf_material::convert_material;
 use super::gltf_primitive::{read_primitive, Primitive};
-use crate::asset_io::{read_asset_file, AssetWarning, MAX_ASSET_FILE_BYTES};
+use crate::asset_io::AssetWarning;
 use crate::mesh::import_settings::ImportSettings;
 use crate::mesh::model_load_error::ModelLoadError;
 use crate::mesh::model_source::{ModelSource, PartSource};
 use crate::mesh::up_axis::UpAxis;
-use crate::model_material::{ImageSource, UvTransform};
+use crate::model_material::UvTransform;
 
-/// Reads mesh `mesh_index` of the glTF file at `path`: one part per triangle primitive, in
+/// Reads mesh `mesh_index` of a glTF file read once for all its meshes ([`GltfFile`]): one part per triangle primitive, in
 /// the mesh's own space (the entity that draws it carries the node's transform), with its
-/// material and the images inside the file it uses. The file's extensions, skins and
+/// material; its images are decoded from the shared file. The file's extensions, skins and
 /// animations are not reported here: the scene importer names each once for the whole file.
 ///
 /// # Errors
-/// [`ModelLoadError`] naming the file when it cannot be read, is not glTF, has no mesh
-/// `mesh_index`, or that mesh has no triangles.
+/// [`ModelLoadError`] naming the file when it has no mesh `mesh_index`, or that mesh has no
+/// triangles.
 pub(crate) fn load_gltf_mesh_source(
-    path: &Path,
+    file: &Arc<GltfFile>,
     mesh_index: usize,
     settings: &ImportSettings,
 ) -> Result<ModelSource, ModelLoadError> {
+    let path = file.path.as_path();
     let gltf_error = |message: String| ModelLoadError::Gltf {
         path: path.to_owned(),
         message,
     };
-    let bytes =
-        read_asset_file(path, MAX_ASSET_FILE_BYTES).map_err(|source| ModelLoadError::Read {
-            path: path.to_owned(),
-            source,
-        })?;
-    let body = bytes.strip_prefix(&[0xEF, 0xBB, 0xBF]).unwrap_or(&bytes);
-    // Validated: every index the document holds names something that exists. (The scene
-    // importer has already named any required extension Onyx lacks.)
-    let gltf = gltf::Gltf::from_slice(body).map_err(|e| {
-        gltf_error(format!(
-            "it is not a valid glTF 2.0 file ({e}); re-export it"
-        ))
-    })?;
-    let document = &gltf.document;
+    let document = &file.document;
     let Some(mesh) = document.meshes().nth(mesh_index) else {
         return Err(gltf_error(format!(
             "it has {} mesh(es), so there is no mesh {mesh_index} (`#mesh/{mesh_index}`)",
             document.meshes().len()
         )));
     };
-    let folder = path.parent().unwrap_or(Path::new(""));
-    let buffers = load_buffers(document, gltf.blob.as_deref(), folder).map_err(gltf_error)?;
+    let buffers = &file.buffers;
     let to_onyx = Mat4::from_scale(Vec3::splat(settings.scale))
         * match settings.up_axis {
             UpAxis::Y => Mat4::IDENTITY,
@@ -71,7 +58,7 @@ pub(crate) fn load_gltf_mesh_source(
             .base_color_texture
             .as_ref()
             .map_or((0, UvTransform::IDENTITY), |t| (t.uv_set, t.transform));
-        match read_primitive(&primitive, &buffers, uv_set, uv) {
+        match read_primitive(&primitive, buffers, uv_set, uv) {
             Primitive::Mesh(data) => parts.push(PartSource {
                 name: mesh
                     .name()
@@ -108,30 +95,7 @@ pub(crate) fn load_gltf_mesh_source(
         )));
     }
     let mut source = ModelSource::new(path.to_owned(), parts, Vec::new(), warnings);
-    for image in document.images() {
-        let key = ImageSource::Embedded {
-            model: path.to_owned(),
-            index: image.index(),
-        };
-        let used = source.parts.iter().any(|p| {
-            p.material
-                .base_color_texture
-                .as_ref()
-                .is_some_and(|t| t.image == key)
-        });
-        if !used {
-            continue;
-        }
-        match image_bytes(&image, &buffers, folder) {
-            Ok(bytes) => {
-                source.encoded.insert(key, bytes);
-            }
-            Err(message) => source.warnings.push(AssetWarning::new(
-                path,
-                None,
-                format!("image {}: {message}", image.index()),
-            )),
-        }
-    }
+    // The file's images are decoded from the shared read, once for all its meshes.
+    source.gltf = Some(file.clone());
     Ok(source)
 }
