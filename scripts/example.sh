@@ -16,6 +16,7 @@ EXAMPLES=(
   "events|events_ping events_pong|two plugins talking through custom events"
   "physics-playground|physics_playground|forces (arrow keys, Space), click to shove, contact events"
   "joints|joints|a swinging door, a chain, a ragdoll and a trigger zone: Joint components and a sensor"
+  "character|character|a capsule walked over stairs and ramps (WASD/arrows, Space jumps): the character controller"
   "procedural-mesh|procedural_mesh|a height field generated in code, drawn and collided with"
   "tested-plugin|tested_plugin|a plugin and its headless tests (cargo test -p tested-plugin)"
   "hot-reload|hot_reload|what survives a reload; try it with: target/debug/onyx dev --plugin-crate examples/hot-reload"

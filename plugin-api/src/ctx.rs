@@ -2,16 +2,17 @@
 
 use abi_stable::std_types::{RResult, RVec};
 
-use crate::__ffi::{BlobFfi, HostRef, PluginOpFfi, RayFfi};
+use crate::__ffi::{BlobFfi, CharacterStepFfi, HostRef, PluginOpFfi, RayFfi, SweepFfi};
 use crate::component::component_type::{decode, BundleParts};
 use crate::glam::Vec3;
 use crate::host::PhysicsCommand;
 mod tool_calls;
 
 use crate::{
-    BlobFormat, BuiltinId, BuiltinValue, Bundle, Component, ComponentType, CtxError, DebugLine,
-    Entity, EntityTransform, GlobalTransform, InputState, KeepPose, LogLevel, MeshId, Message,
-    Parent, RayHit, TextureId, Time, Transform,
+    BlobFormat, BuiltinId, BuiltinValue, Bundle, CharacterController, CharacterMove, ColliderShape,
+    Component, ComponentType, CtxError, DebugLine, Entity, EntityTransform, GlobalTransform,
+    InputState, KeepPose, LogLevel, MeshId, Message, Parent, QueryFilter, RayHit, TextureId, Time,
+    Transform,
 };
 
 /// The host, as a plugin reaches it: the world, the clock, input, events and logging.
@@ -370,6 +371,107 @@ impl<'a> Ctx<'a> {
             max_distance,
         };
         self.host.raycast(ray).into_option()
+    }
+
+    /// The entities whose colliders overlap `shape` placed at `pose` (scaled with its
+    /// `scale` as a collider is), exactly (the narrowphase's test, not bounding boxes);
+    /// touching counts. Each entity once, in no set order.
+    ///
+    /// ```no_run
+    /// # use onyx_plugin_api::*;
+    /// # fn demo(ctx: &mut Ctx, player: Entity) -> Result<(), CtxError> {
+    /// let near = ctx.overlap(
+    ///     ColliderShape::Sphere { radius: 2.0 },
+    ///     Transform::from_xyz(0.0, 1.0, 0.0),
+    ///     &QueryFilter::default().excluding(player),
+    /// )?;
+    /// # let _ = near; Ok(()) }
+    /// ```
+    ///
+    /// # Errors
+    /// [`CtxError::Invalid`] for a shape other than a sphere, a box or a capsule, a size
+    /// that is not above zero, or a non-finite pose.
+    pub fn overlap(
+        &mut self,
+        shape: ColliderShape,
+        pose: Transform,
+        filter: &QueryFilter,
+    ) -> Result<Vec<Entity>, CtxError> {
+        ok(self.host.overlap(shape, pose.into(), (*filter).into())).map(RVec::into_vec)
+    }
+
+    /// Sweeps `shape` from `pose` along `direction` (need not be normalised) for up to
+    /// `max_distance` metres, without turning, and returns the first collider it meets:
+    /// the entity, the point, the surface normal (facing the shape) and the distance
+    /// travelled. Contacts it only slides along or moves away from do not stop it; one it
+    /// starts inside and moves further into hits at distance 0.
+    ///
+    /// # Errors
+    /// As [`Ctx::overlap`].
+    pub fn shape_cast(
+        &mut self,
+        shape: ColliderShape,
+        pose: Transform,
+        direction: Vec3,
+        max_distance: f32,
+        filter: &QueryFilter,
+    ) -> Result<Option<RayHit>, CtxError> {
+        let sweep = SweepFfi {
+            direction: direction.to_array(),
+            max_distance,
+        };
+        ok(self
+            .host
+            .shape_cast(shape, pose.into(), sweep, (*filter).into()))
+        .map(|hit| hit.into_option())
+    }
+
+    /// The current coordinate of the [`Joint`](crate::Joint) on `entity`, at the bodies'
+    /// poses after the last step: a revolute joint's angle (radians, in (−π, π], 0 where it
+    /// was made), a prismatic joint's position along its axis (metres), a distance joint's
+    /// length (metres), a spherical joint's twist (radians). `None` for a fixed joint and a
+    /// joint not made yet (it is made at the next fixed step). A broken joint still reads
+    /// where its two sides are.
+    ///
+    /// # Errors
+    /// [`CtxError::MissingComponent`] when `entity` has no `Joint`.
+    pub fn joint_coordinate(&mut self, entity: Entity) -> Result<Option<f32>, CtxError> {
+        ok(self.host.joint_coordinate(entity)).map(|c| c.into_option())
+    }
+
+    /// Moves the character `entity` (a [`RigidBody`](crate::RigidBody) of kind
+    /// `Kinematic` with a solid convex collider — a capsule, typically) by `desired`
+    /// (world axes, metres: its velocity times this step, gravity included) as far as the
+    /// world lets it: it slides along walls, walks up slopes up to the largest angle and
+    /// steps up to the step height, stays on the ground going down, and pushes dynamic
+    /// bodies (see [`CharacterController`]). Its transform moves at once; its body follows
+    /// in the next fixed step. Call it from `on_fixed_update`, once per step.
+    ///
+    /// ```no_run
+    /// # use onyx_plugin_api::*;
+    /// # fn demo(ctx: &mut Ctx, player: Entity, velocity: &mut glam::Vec3, dt: f32) -> Result<(), CtxError> {
+    /// velocity.y -= 9.81 * dt;
+    /// let moved = ctx.move_character(player, *velocity * dt, &CharacterController::default())?;
+    /// if moved.grounded {
+    ///     velocity.y = 0.0;
+    /// }
+    /// # Ok(()) }
+    /// ```
+    ///
+    /// # Errors
+    /// [`CtxError::Invalid`] when `entity` has no physics body (yet: bodies are made at the
+    /// next fixed step) or no solid convex collider, or `desired` is not finite.
+    pub fn move_character(
+        &mut self,
+        entity: Entity,
+        desired: Vec3,
+        controller: &CharacterController,
+    ) -> Result<CharacterMove, CtxError> {
+        let step = CharacterStepFfi {
+            desired: desired.to_array(),
+            controller: *controller,
+        };
+        ok(self.host.move_character(entity, step)).map(Into::into)
     }
 
     fn physics(&mut self, entity: Entity, command: PhysicsCommand) -> Result<(), CtxError> {

@@ -48,6 +48,8 @@
 //!   world pose the host computes.
 //! - `event/`: [`Event`] and its sources; [`Message`] for typed custom events.
 //! - `input/`: [`Key`], [`MouseButton`], [`InputState`].
+//! - `physics/`: [`QueryFilter`] for overlap queries and shape casts, [`CharacterController`]
+//!   and [`CharacterMove`] for kinematic characters.
 //! - [`Time`] (`time.rs`), [`Flow`] (`flow.rs`), [`LogLevel`] (`log_level.rs`),
 //!   [`state`] (save/load helpers for hot reload).
 //! - [`tools`]: what tools (the editor) read through `Ctx`: entity lists, components as
@@ -84,6 +86,7 @@ pub mod gui;
 pub mod host;
 pub mod input;
 mod log_level;
+mod physics;
 mod plugin;
 pub mod state;
 mod time;
@@ -108,6 +111,7 @@ pub use flow::Flow;
 pub use glam;
 pub use input::*;
 pub use log_level::LogLevel;
+pub use physics::{CharacterController, CharacterMove, QueryFilter};
 pub use plugin::{AttachInfo, Plugin, PluginError};
 pub use time::Time;
 pub use tools::{PlayMode, Script, ScriptCall, ScriptPhase};

@@ -66,7 +66,8 @@ fn body(
         Transform::from_translation(at).with_scale(half * 2.0),
         MeshRenderer::new(MeshId::CUBE).with_material(colour),
         RigidBody::dynamic(),
-        Collider::cuboid(half.x, half.y, half.z).with_density(300.0),
+        // A unit cube scaled to the body's size, like its mesh.
+        Collider::cuboid(0.5, 0.5, 0.5).with_density(300.0),
     ))
 }
 
@@ -99,7 +100,7 @@ impl Joints {
             Transform::from_xyz(0.0, 1.1, 0.0).with_scale(Vec3::new(0.1, 2.2, 0.1)),
             MeshRenderer::new(MeshId::CUBE).with_material(wood),
             RigidBody::fixed(),
-            Collider::cuboid(0.05, 1.1, 0.05),
+            Collider::cuboid(0.5, 0.5, 0.5),
         ))?;
         let door = body(
             ctx,
@@ -209,7 +210,7 @@ impl Joints {
             Transform::from_xyz(0.0, 4.0, 3.0).with_scale(Vec3::splat(0.4)),
             MeshRenderer::new(MeshId::SPHERE).with_material(Material::color(0.9, 0.3, 0.2)),
             RigidBody::dynamic(),
-            Collider::sphere(0.2),
+            Collider::sphere(0.5),
         ))?;
         Ok(())
     }

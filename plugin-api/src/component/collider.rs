@@ -6,7 +6,9 @@ use serde::{Deserialize, Serialize};
 use super::builtin::{finite, FileRefs, HostRefs};
 use crate::{Builtin, InvalidValue, MeshId};
 
-/// A collision shape, in the entity's local frame (the transform's scale does not apply).
+/// A collision shape, in the entity's local frame, scaled with the entity (its world scale:
+/// any scale for boxes, hulls and meshes; spheres and capsules stay round and take the
+/// largest component, with a warning naming the entity when the scale is not uniform).
 #[repr(C, u8)]
 #[derive(StableAbi, Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
 pub enum ColliderShape {
@@ -41,14 +43,17 @@ pub enum ColliderShape {
     },
 }
 
-/// What an entity collides with, and its material. Friction uses the geometric mean of the
+/// What an entity collides with, and its material. A collider on an entity without a
+/// [`RigidBody`](crate::RigidBody) belongs to the nearest ancestor's body (a compound: mass,
+/// centre of mass and inertia of all its colliders combined), or is a static body of its own
+/// when no ancestor has one. Friction uses the geometric mean of the
 /// two colliders; restitution the larger of the two.
 #[repr(C)]
 #[derive(StableAbi, Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
 pub struct Collider {
     /// The shape.
     pub shape: ColliderShape,
-    /// Offset of the shape from the entity's origin, local frame, metres.
+    /// Offset of the shape from the entity's origin, local frame, metres (scaled with it).
     pub offset: [f32; 3],
     /// Density, kg/m³ (gives mass and inertia when the body's mass is 0).
     pub density: f32,

@@ -4,7 +4,8 @@ use glam::Vec3;
 
 use crate::Entity;
 
-/// Two colliders started or stopped touching. Every start is followed by one end.
+/// What the physics engine reports: contacts starting and ending (every start is followed by
+/// one end), sensors entered and left, joints breaking.
 #[derive(Clone, Copy, Debug, PartialEq)]
 #[non_exhaustive]
 pub enum PhysicsEvent {
@@ -42,5 +43,15 @@ pub enum PhysicsEvent {
         sensor: Entity,
         /// The entity that left.
         other: Entity,
+    },
+    /// The joint on `entity` broke: the force or torque it carried passed its break
+    /// threshold (its [`Joint::broken`](crate::Joint::broken) is now set). Reported once.
+    JointBroke {
+        /// The entity holding the `Joint` component.
+        entity: Entity,
+        /// The force the joint carried when it broke, N (world axes).
+        force: Vec3,
+        /// The torque it carried, N·m.
+        torque: Vec3,
     },
 }

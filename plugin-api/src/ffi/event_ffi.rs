@@ -91,6 +91,11 @@ pub enum EventFfi<'a> {
         sensor: Entity,
         other: Entity,
     },
+    JointBroke {
+        entity: Entity,
+        force: [f32; 3],
+        torque: [f32; 3],
+    },
     Custom {
         name: RStr<'a>,
         sender: RStr<'a>,
@@ -195,6 +200,15 @@ impl<'a> From<&'a Event> for EventFfi<'a> {
                     other: *other,
                 }
             }
+            Event::Physics(PhysicsEvent::JointBroke {
+                entity,
+                force,
+                torque,
+            }) => EventFfi::JointBroke {
+                entity: *entity,
+                force: force.to_array(),
+                torque: torque.to_array(),
+            },
             Event::Custom(CustomEvent {
                 name,
                 sender,
@@ -294,6 +308,16 @@ impl From<EventFfi<'_>> for Event {
             EventFfi::SensorExited { sensor, other } => {
                 PhysicsEvent::SensorExited { sensor, other }.into()
             }
+            EventFfi::JointBroke {
+                entity,
+                force,
+                torque,
+            } => PhysicsEvent::JointBroke {
+                entity,
+                force: force.into(),
+                torque: torque.into(),
+            }
+            .into(),
             EventFfi::Custom {
                 name,
                 sender,
@@ -389,6 +413,12 @@ mod tests {
             PhysicsEvent::SensorExited {
                 sensor: Entity::from_bits(4),
                 other: Entity::from_bits(3),
+            }
+            .into(),
+            PhysicsEvent::JointBroke {
+                entity: Entity::from_bits(5),
+                force: glam::Vec3::new(60.0, 0.0, 0.0),
+                torque: glam::Vec3::Z,
             }
             .into(),
             CustomEvent {

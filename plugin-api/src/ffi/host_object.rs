@@ -21,8 +21,8 @@ use crate::host::PlayCommand;
 use crate::host::{HostServices, PluginRequest};
 use crate::tools::{PlayMode, RenderOverrides};
 use crate::{
-    BuiltinId, CtxError, DebugLine, Entity, EntityTransform, InputState, KeepPose, LogLevel,
-    MeshId, RayHit, TextureId, Time,
+    BuiltinId, CharacterController, CharacterMove, ColliderShape, CtxError, DebugLine, Entity,
+    EntityTransform, InputState, KeepPose, LogLevel, MeshId, QueryFilter, RayHit, TextureId, Time,
 };
 
 #[sabi_trait]
@@ -96,6 +96,103 @@ pub trait HostObject {
     fn pick(&mut self, ray: RayFfi) -> ROption<RayHit>;
     fn local_bounds(&mut self, entity: Entity) -> ROption<BoundsFfi>;
     fn import_gltf(&mut self, path: RStr<'_>) -> RResult<Entity, CtxErrorFfi>;
+    // ----- physics queries, joints and characters (appended in 0.7) -----
+    fn overlap(
+        &mut self,
+        shape: ColliderShape,
+        pose: TransformFfi,
+        filter: QueryFilterFfi,
+    ) -> RResult<RVec<Entity>, CtxErrorFfi>;
+    fn shape_cast(
+        &mut self,
+        shape: ColliderShape,
+        pose: TransformFfi,
+        sweep: SweepFfi,
+        filter: QueryFilterFfi,
+    ) -> RResult<ROption<RayHit>, CtxErrorFfi>;
+    fn joint_coordinate(&mut self, entity: Entity) -> RResult<ROption<f32>, CtxErrorFfi>;
+    fn move_character(
+        &mut self,
+        entity: Entity,
+        step: CharacterStepFfi,
+    ) -> RResult<CharacterMoveFfi, CtxErrorFfi>;
+}
+
+/// One move of a character: the move wanted (world axes, metres) and how to make it.
+#[repr(C)]
+#[derive(abi_stable::StableAbi, Clone, Copy, Debug, PartialEq)]
+pub struct CharacterStepFfi {
+    pub desired: [f32; 3],
+    pub controller: CharacterController,
+}
+
+/// A [`QueryFilter`], as plain data (`exclude` bits 0: none).
+#[repr(C)]
+#[derive(abi_stable::StableAbi, Clone, Copy, Debug, PartialEq, Eq)]
+pub struct QueryFilterFfi {
+    pub memberships: u32,
+    pub filter: u32,
+    pub exclude: Entity,
+    pub sensors: bool,
+}
+
+impl From<QueryFilter> for QueryFilterFfi {
+    fn from(f: QueryFilter) -> Self {
+        Self {
+            memberships: f.memberships,
+            filter: f.filter,
+            exclude: f.exclude.unwrap_or(Entity::from_bits(0)),
+            sensors: f.sensors,
+        }
+    }
+}
+
+impl From<QueryFilterFfi> for QueryFilter {
+    fn from(f: QueryFilterFfi) -> Self {
+        Self {
+            memberships: f.memberships,
+            filter: f.filter,
+            exclude: (f.exclude.to_bits() != 0).then_some(f.exclude),
+            sensors: f.sensors,
+        }
+    }
+}
+
+/// The sweep of a shape cast: a direction (need not be normalised) and a length, metres.
+#[repr(C)]
+#[derive(abi_stable::StableAbi, Clone, Copy, Debug, PartialEq)]
+pub struct SweepFfi {
+    pub direction: [f32; 3],
+    pub max_distance: f32,
+}
+
+/// A [`CharacterMove`], as plain data.
+#[repr(C)]
+#[derive(abi_stable::StableAbi, Clone, Debug, PartialEq)]
+pub struct CharacterMoveFfi {
+    pub translation: [f32; 3],
+    pub grounded: bool,
+    pub collisions: RVec<RayHit>,
+}
+
+impl From<CharacterMove> for CharacterMoveFfi {
+    fn from(m: CharacterMove) -> Self {
+        Self {
+            translation: m.translation.to_array(),
+            grounded: m.grounded,
+            collisions: m.collisions.into(),
+        }
+    }
+}
+
+impl From<CharacterMoveFfi> for CharacterMove {
+    fn from(m: CharacterMoveFfi) -> Self {
+        Self {
+            translation: m.translation.into(),
+            grounded: m.grounded,
+            collisions: m.collisions.into_vec(),
+        }
+    }
 }
 
 /// A ray, as plain data.
@@ -487,6 +584,57 @@ impl<H: HostServices + ?Sized> HostObject for HostBridge<'_, H> {
 
     fn import_gltf(&mut self, path: RStr<'_>) -> RResult<Entity, CtxErrorFfi> {
         result("import_gltf", || self.0.import_gltf(path.as_str()))
+    }
+
+    fn overlap(
+        &mut self,
+        shape: ColliderShape,
+        pose: TransformFfi,
+        filter: QueryFilterFfi,
+    ) -> RResult<RVec<Entity>, CtxErrorFfi> {
+        result("overlap", || {
+            self.0
+                .overlap(shape, pose.into(), filter.into())
+                .map(Into::into)
+        })
+    }
+
+    fn shape_cast(
+        &mut self,
+        shape: ColliderShape,
+        pose: TransformFfi,
+        sweep: SweepFfi,
+        filter: QueryFilterFfi,
+    ) -> RResult<ROption<RayHit>, CtxErrorFfi> {
+        result("shape_cast", || {
+            self.0
+                .shape_cast(
+                    shape,
+                    pose.into(),
+                    sweep.direction.into(),
+                    sweep.max_distance,
+                    filter.into(),
+                )
+                .map(Into::into)
+        })
+    }
+
+    fn joint_coordinate(&mut self, entity: Entity) -> RResult<ROption<f32>, CtxErrorFfi> {
+        result("joint_coordinate", || {
+            self.0.joint_coordinate(entity).map(Into::into)
+        })
+    }
+
+    fn move_character(
+        &mut self,
+        entity: Entity,
+        step: CharacterStepFfi,
+    ) -> RResult<CharacterMoveFfi, CtxErrorFfi> {
+        result("move_character", || {
+            self.0
+                .move_character(entity, step.desired.into(), &step.controller)
+                .map(Into::into)
+        })
     }
 }
 

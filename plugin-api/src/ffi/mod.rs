@@ -32,7 +32,8 @@ pub use ctx_error_ffi::{CtxErrorFfi, CtxErrorKind};
 pub use event_ffi::EventFfi;
 pub use gui_ffi::{GuiInputFfi, GuiOutputFfi, MeshFfi, TextureIdFfi, TextureSetFfi, VertexFfi};
 pub use host_object::{
-    with_ctx, HostBridge, HostObject, HostObject_TO, HostRef, PluginOpFfi, RayFfi,
+    with_ctx, CharacterMoveFfi, CharacterStepFfi, HostBridge, HostObject, HostObject_TO, HostRef,
+    PluginOpFfi, QueryFilterFfi, RayFfi, SweepFfi,
 };
 pub use plugin_gui::{mark_no_gui, PluginGui};
 pub use plugin_object::{

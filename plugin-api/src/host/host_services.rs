@@ -3,9 +3,16 @@
 use crate::glam::Vec3;
 use crate::host::Blob;
 use crate::{
-    BuiltinId, BuiltinValue, CtxError, DebugLine, Entity, EntityTransform, GlobalTransform,
-    InputState, KeepPose, LogLevel, MeshId, RayHit, TextureId, Time, Transform,
+    BuiltinId, BuiltinValue, CharacterController, CharacterMove, ColliderShape, CtxError,
+    DebugLine, Entity, EntityTransform, GlobalTransform, InputState, KeepPose, LogLevel, MeshId,
+    QueryFilter, RayHit, TextureId, Time, Transform,
 };
+
+fn unsupported(service: &str) -> CtxError {
+    CtxError::Unsupported {
+        service: service.to_owned(),
+    }
+}
 
 /// The services behind [`Ctx`](crate::Ctx), implemented by the host for the duration of one
 /// plugin call. The SDK turns an implementation into the ABI-stable object that crosses
@@ -95,6 +102,44 @@ pub trait HostServices: crate::host::ToolServices {
     fn physics_command(&mut self, entity: Entity, command: PhysicsCommand) -> Result<(), CtxError>;
     /// The first collider along a ray, if any within `max_distance`.
     fn raycast(&mut self, origin: Vec3, direction: Vec3, max_distance: f32) -> Option<RayHit>;
+    /// The entities whose colliders overlap `shape` placed (and scaled) at `pose`.
+    fn overlap(
+        &mut self,
+        shape: ColliderShape,
+        pose: Transform,
+        filter: QueryFilter,
+    ) -> Result<Vec<Entity>, CtxError> {
+        let _ = (shape, pose, filter);
+        Err(unsupported("overlap"))
+    }
+    /// The first collider `shape` at `pose` meets swept along `direction` within
+    /// `max_distance`.
+    fn shape_cast(
+        &mut self,
+        shape: ColliderShape,
+        pose: Transform,
+        direction: Vec3,
+        max_distance: f32,
+        filter: QueryFilter,
+    ) -> Result<Option<RayHit>, CtxError> {
+        let _ = (shape, pose, direction, max_distance, filter);
+        Err(unsupported("shape_cast"))
+    }
+    /// The current coordinate of the joint on `entity` (angle, position or length).
+    fn joint_coordinate(&mut self, entity: Entity) -> Result<Option<f32>, CtxError> {
+        let _ = entity;
+        Err(unsupported("joint_coordinate"))
+    }
+    /// Moves the kinematic character `entity` by `desired` as far as the world lets it.
+    fn move_character(
+        &mut self,
+        entity: Entity,
+        desired: Vec3,
+        controller: &CharacterController,
+    ) -> Result<CharacterMove, CtxError> {
+        let _ = (entity, desired, controller);
+        Err(unsupported("move_character"))
+    }
 }
 
 /// Something a plugin does to a body ([`Ctx::apply_force`](crate::Ctx::apply_force), …).

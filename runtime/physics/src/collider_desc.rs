@@ -93,6 +93,19 @@ impl ColliderDesc {
         )?))))
     }
 
+    /// The same collider with its shape stretched by `scale` ([`Shape::scaled`]: any scale
+    /// for boxes, hulls and meshes, the largest component for spheres and capsules). The
+    /// pose is left alone: where the shape sits is the caller's. Also returns whether the
+    /// scale was non-uniform for a shape that stays round.
+    ///
+    /// # Errors
+    /// A hull or mesh that the scale flattens: the builder's message.
+    pub fn scaled(mut self, scale: Vec3) -> Result<(Self, bool), String> {
+        let scaled = self.shape.scaled(scale)?;
+        self.shape = scaled.shape;
+        Ok((self, scaled.made_uniform))
+    }
+
     /// Offset from the body origin, metres.
     pub fn translation(mut self, t: Vec3) -> Self {
         self.local_pose.translation = t;

@@ -1,5 +1,5 @@
-//! Debug drawing: `PhysicsWorld::debug_lines` emits collider outlines, contact points and
-//! normals as [`DebugLine`]s.
+//! Debug drawing: `PhysicsWorld::debug_lines` emits collider outlines, joint anchors,
+//! contact points and normals as [`DebugLine`]s.
 
 use glam::{Quat, Vec3};
 
@@ -30,10 +30,18 @@ pub mod colors {
     pub const CONTACT: [f32; 4] = [1.0, 0.2, 0.2, 1.0];
     /// Contact normal.
     pub const NORMAL: [f32; 4] = [1.0, 1.0, 1.0, 1.0];
+    /// A joint's anchors (a cross on each side), the segment between them and its axis.
+    pub const JOINT: [f32; 4] = [1.0, 0.5, 0.0, 1.0];
+    /// A broken joint's anchors.
+    pub const BROKEN_JOINT: [f32; 4] = [0.6, 0.2, 0.2, 1.0];
 }
 
+/// Half size of the cross drawn at a joint anchor, and length of its axis, metres.
+pub const DEBUG_JOINT_ANCHOR_SIZE: f32 = 0.06;
+
 impl PhysicsWorld {
-    /// Collider outlines, contact points (small crosses) and normals (0.2 m) as lines.
+    /// Collider outlines, joint anchors, contact points (small crosses) and normals (0.2 m)
+    /// as lines.
     #[must_use]
     pub fn debug_lines(&self) -> Vec<DebugLine> {
         let mut out = Vec::new();
@@ -41,8 +49,11 @@ impl PhysicsWorld {
         out
     }
 
-    /// Appends debug lines; choose colliders and/or contacts.
+    /// Appends debug lines; choose colliders (with the joints' anchors) and/or contacts.
     pub fn debug_lines_into(&self, out: &mut Vec<DebugLine>, colliders: bool, contacts: bool) {
+        if colliders {
+            self.joint_lines(out);
+        }
         if colliders {
             for (_, c) in self.colliders.iter() {
                 let Some(b) = self.bodies.get(c.parent) else {
@@ -86,6 +97,51 @@ impl PhysicsWorld {
                     }
                 }
             }
+        }
+    }
+}
+
+impl PhysicsWorld {
+    /// Each joint: a cross at its anchor on either side, the segment between them (its
+    /// error: a held joint's crosses meet) and its axis (the frame's X: a hinge's or a
+    /// slider's axis) from the second body's anchor.
+    fn joint_lines(&self, out: &mut Vec<DebugLine>) {
+        let s = DEBUG_JOINT_ANCHOR_SIZE;
+        for (_, joint) in self.joints.iter() {
+            let frame = |body: Option<crate::BodyHandle>, local: &Pose| match body {
+                Some(b) => self.bodies.get(b).map(|b| b.pose.mul_pose(local)),
+                None => Some(*local),
+            };
+            let (Some(a), Some(b)) = (
+                frame(joint.body_a, &joint.desc.frame_a),
+                frame(Some(joint.body_b), &joint.desc.frame_b),
+            ) else {
+                continue;
+            };
+            let color = if joint.broken {
+                colors::BROKEN_JOINT
+            } else {
+                colors::JOINT
+            };
+            for p in [a.translation, b.translation] {
+                for axis in [Vec3::X, Vec3::Y, Vec3::Z] {
+                    out.push(DebugLine {
+                        a: p - axis * s,
+                        b: p + axis * s,
+                        color,
+                    });
+                }
+            }
+            out.push(DebugLine {
+                a: a.translation,
+                b: b.translation,
+                color,
+            });
+            out.push(DebugLine {
+                a: b.translation,
+                b: b.translation + b.rotation * Vec3::X * (4.0 * s),
+                color,
+            });
         }
     }
 }

@@ -28,6 +28,7 @@
 //!   [`material`], [`combine_rule`], shapes in [`shape`].
 //! - Pipeline: [`broadphase`] (dynamic AABB tree), [`narrowphase`] (contact generation,
 //!   GJK/EPA, manifolds), [`solver`] (soft-step contact solver), private stages in `pipeline`.
+//! - Characters: [`character`] ([`PhysicsWorld::move_character`], move-and-slide).
 //! - Output: [`step_output`], [`step_counters`], [`contact_event`]; settings in
 //!   [`physics_settings`].
 //!
@@ -49,6 +50,7 @@ pub mod body_set; // `BodySet`: flat storage of bodies.
 pub mod body_type; // `BodyType`: dynamic, kinematic, static.
 pub mod broadphase; // Dynamic AABB tree and new-pair search.
 pub mod broken_joint; // `BrokenJoint`: a joint that broke this step (reported once).
+pub mod character; // Kinematic character controller: move-and-slide, steps, snap, push.
 pub mod collider; // `Collider`: shape + offset + material on a body.
 pub mod collider_desc; // `ColliderDesc`: collider builder.
 pub mod collider_handle; // `ColliderHandle`: generational collider handle.
@@ -76,7 +78,7 @@ pub mod physics_settings; // `PhysicsSettings`: every tunable with unit and cost
 pub mod physics_world; // `PhysicsWorld`: owner of everything; `step()`.
 pub(crate) mod pipeline; // Private step stages (broadphase → narrowphase → solve → write-back/CCD → sleep → events).
 pub mod pose; // `Pose`: rotation + translation.
-pub mod query; // Scene queries: ray casts, shape and AABB overlap.
+pub mod query; // Scene queries: ray casts, shape casts, shape and AABB overlap.
 pub mod rigid_body; // `RigidBody`: state of one body.
 pub mod rigid_body_desc; // `RigidBodyDesc`: body builder.
 pub mod settings_error; // `SettingsError`: a settings field outside what can be simulated.
@@ -91,6 +93,7 @@ pub use body_handle::BodyHandle;
 pub use body_set::BodySet;
 pub use body_type::BodyType;
 pub use broken_joint::BrokenJoint;
+pub use character::{CharacterController, CharacterMove};
 pub use collider::Collider;
 pub use collider_desc::ColliderDesc;
 pub use collider_handle::ColliderHandle;
@@ -113,7 +116,7 @@ pub use physics_preset::PhysicsPreset;
 pub use physics_settings::PhysicsSettings;
 pub use physics_world::PhysicsWorld;
 pub use pose::Pose;
-pub use query::{QueryFilter, RayHit};
+pub use query::{QueryFilter, RayHit, ShapeHit};
 pub use rigid_body::RigidBody;
 pub use rigid_body_desc::RigidBodyDesc;
 pub use settings_error::SettingsError;

@@ -326,3 +326,37 @@ fn teleported_static_body_is_found_by_queries_at_its_new_place() {
         "old place must be empty"
     );
 }
+
+#[test]
+fn debug_lines_mark_a_joints_anchors_where_the_joint_holds_them_together() {
+    let mut w = PhysicsWorld::default();
+    let bob = w.insert_body(RigidBodyDesc::dynamic().translation(Vec3::new(1.0, 5.0, 0.0)));
+    w.insert_collider(ColliderDesc::sphere(0.1), bob);
+    let pivot = Vec3::new(0.0, 5.0, 0.0);
+    w.insert_joint(
+        onyx_physics::JointDesc::spherical()
+            .local_anchor_a(pivot)
+            .local_anchor_b(Vec3::new(-1.0, 0.0, 0.0)),
+        None,
+        bob,
+    )
+    .unwrap();
+    run(&mut w, 30);
+    let mut lines = Vec::new();
+    w.debug_lines_into(&mut lines, true, false);
+    let joint: Vec<_> = lines
+        .iter()
+        .filter(|l| l.color == onyx_physics::debug_lines::colors::JOINT)
+        .collect();
+    // Two crosses (3 lines each), the segment between the anchors, the axis.
+    assert_eq!(joint.len(), 8, "{joint:?}");
+    let s = onyx_physics::debug_lines::DEBUG_JOINT_ANCHOR_SIZE;
+    for cross in joint[..6].iter() {
+        let centre = (cross.a + cross.b) * 0.5;
+        assert!(
+            centre.distance(pivot) < 0.01,
+            "every cross is at the pivot (the swinging bob's anchor stays on it): {centre}"
+        );
+        assert!((cross.a.distance(cross.b) - 2.0 * s).abs() < 1e-5);
+    }
+}

@@ -323,6 +323,38 @@ fn the_example_script_lists_every_example_and_runs_only_those() {
 }
 
 #[test]
+fn character_walks_up_the_stairs_on_w_and_jumps_on_space() {
+    let mut host = example_host(&["character"]);
+    host.step(5);
+    let start = transform(&host, "character").translation;
+    // 3 m/s for 2.5 s along -Z: over the 5 steps of 20 cm (from z = -3 to -5.5) onto the
+    // landing 1 m up.
+    host.hold_key(Key::W, true);
+    host.step(150);
+    host.hold_key(Key::W, false);
+    host.step(5);
+    assert_running(&host);
+    let on_top = transform(&host, "character").translation;
+    let standing = 0.5 + 0.3 + 0.01;
+    assert!(
+        on_top.z < -6.0 && on_top.z > -9.5 && (on_top.y - (1.0 + standing)).abs() < 0.02,
+        "the character climbed from {start} onto the landing (y = {}): it is at {on_top}",
+        1.0 + standing
+    );
+    let camera = transform(&host, "camera").translation;
+    assert!(
+        (camera - on_top - Vec3::new(0.0, 3.0, 7.0)).length() < 0.05,
+        "the camera follows: {camera}"
+    );
+    host.hold_key(Key::Space, true);
+    host.step(2);
+    host.hold_key(Key::Space, false);
+    host.step(10);
+    let jumped = transform(&host, "character").translation.y - on_top.y;
+    assert!(jumped > 0.2, "Space jumps: {jumped} m up after 0.2 s");
+}
+
+#[test]
 fn joints_open_the_door_hang_the_chain_hold_the_ragdoll_and_count_the_zone() {
     let mut host = example_host(&["joints"]);
     host.step(240); // 4 s at 60 Hz

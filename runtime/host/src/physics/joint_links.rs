@@ -168,6 +168,10 @@ impl JointLinks {
     }
 
     /// The entity whose joint this is.
+    pub fn handle(&self, e: hecs::Entity) -> Option<JointHandle> {
+        self.links.get(&e).map(|(h, _)| *h)
+    }
+
     pub fn entity(&self, handle: JointHandle) -> Option<hecs::Entity> {
         self.entity_of.get(&handle).copied()
     }

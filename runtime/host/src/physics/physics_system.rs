@@ -1,11 +1,11 @@
 //! [`PhysicsSystem`]: onyx-physics driven by `RigidBody` and `Collider` components.
 
-use std::collections::HashMap;
+use std::collections::{HashMap, HashSet};
 
 use onyx_physics::glam::{Affine3A, Quat, Vec3};
 use onyx_physics::{
-    BodyHandle, BodyType, ColliderDesc, CollisionGroups, ContactEventKind, MassProperties,
-    PhysicsSettings, PhysicsWorld, Pose, QueryFilter, RigidBodyDesc,
+    BodyHandle, BodyType, ColliderDesc, ColliderHandle, CollisionGroups, ContactEventKind,
+    MassProperties, PhysicsSettings, PhysicsWorld, Pose, QueryFilter, RigidBodyDesc,
 };
 use onyx_plugin_api::host::PhysicsCommand;
 use onyx_plugin_api::{
@@ -13,6 +13,7 @@ use onyx_plugin_api::{
     PlatformEvent, RayHit, RigidBody, Transform,
 };
 
+use super::compound::{self, PlacedCollider, Placement};
 use super::joint_links::JointLinks;
 use super::step_reports::{Named, StepReports};
 use super::ScenePhysics;
@@ -22,12 +23,16 @@ use crate::entity_map::EntityMap;
 use crate::hierarchy::world_pose;
 use crate::world::WorldState;
 
-/// What the host keeps per simulated entity.
+/// What the host keeps per simulated body (keyed by the entity that owns it: the one with
+/// the `RigidBody`, or a static collider's own entity).
 #[derive(Clone, Debug)]
 struct Link {
     body: BodyHandle,
-    /// The components the body was built from: a change rebuilds it.
-    built_from: (Option<RigidBody>, Collider),
+    /// The `RigidBody` configuration the body was built from: a change rebuilds it.
+    rigid_body: Option<RigidBody>,
+    /// The colliders on the body as they were built: a change replaces them (the body keeps
+    /// its motion).
+    colliders: Vec<(PlacedCollider, ColliderHandle)>,
     /// The local transform and velocities written back after the last step (or seen at the
     /// last sync): a difference means the user moved the entity.
     written: Transform,
@@ -45,17 +50,33 @@ struct Link {
     seen: u64,
 }
 
+impl Link {
+    /// Whether the body carries exactly these colliders, placed as they are now.
+    fn carries(&self, colliders: &[PlacedCollider]) -> bool {
+        self.colliders.len() == colliders.len()
+            && self
+                .colliders
+                .iter()
+                .zip(colliders)
+                .all(|((built, _), now)| built == now)
+    }
+}
+
 /// The physics world behind the components. Empty scenes cost nothing: with no collider in
 /// the world, a step does no work.
 pub struct PhysicsSystem {
-    world: PhysicsWorld,
+    pub(super) world: PhysicsWorld,
     links: EntityMap<Link>,
     entity_of: HashMap<BodyHandle, hecs::Entity>,
-    /// Bodies removed since the last step, whose "contact ended" events arrive with it.
-    departed: HashMap<BodyHandle, hecs::Entity>,
+    /// The entity holding each collider's component (events and queries name it).
+    pub(super) collider_entity: HashMap<ColliderHandle, hecs::Entity>,
+    /// Colliders removed since the last step, whose "contact ended" events arrive with it.
+    departed: HashMap<ColliderHandle, hecs::Entity>,
     /// Colliders that could not be built, kept so each failure is reported once (until the
-    /// component changes).
-    failed: HashMap<hecs::Entity, Collider>,
+    /// component or its placement changes).
+    failed: HashMap<hecs::Entity, (Collider, Placement)>,
+    /// Entities already warned that their non-uniform scale made a sphere or capsule round.
+    warned_scale: HashSet<hecs::Entity>,
     commands: Vec<(Entity, PhysicsCommand)>,
     /// The preset and overrides chosen by a scene file or the host, if any.
     scene_physics: Option<ScenePhysics>,
@@ -64,7 +85,7 @@ pub struct PhysicsSystem {
     /// What the steps reported that was already logged.
     reports: StepReports,
     /// The physics joints of `Joint` components.
-    joints: JointLinks,
+    pub(super) joints: JointLinks,
 }
 
 impl std::fmt::Debug for PhysicsSystem {
@@ -82,7 +103,7 @@ impl Default for PhysicsSystem {
 }
 
 /// The rigid part (translation and rotation) of a world pose: bodies have no scale.
-fn rigid(pose: &Affine3A) -> Pose {
+pub(super) fn rigid(pose: &Affine3A) -> Pose {
     let (_, rotation, translation) = pose.to_scale_rotation_translation();
     Pose {
         translation,
@@ -129,8 +150,10 @@ impl PhysicsSystem {
             world: PhysicsWorld::new(settings),
             links: EntityMap::default(),
             entity_of: HashMap::new(),
+            collider_entity: HashMap::new(),
             departed: HashMap::new(),
             failed: HashMap::new(),
+            warned_scale: HashSet::new(),
             commands: Vec::new(),
             scene_physics: None,
             sync_epoch: 0,
@@ -183,6 +206,23 @@ impl PhysicsSystem {
         Ok(())
     }
 
+    /// The body of `e`: its own (a `RigidBody`'s, or a static collider's), or the body its
+    /// collider belongs to.
+    pub(super) fn body_of(&self, e: hecs::Entity) -> Option<BodyHandle> {
+        if let Some(link) = self.links.get(e) {
+            return Some(link.body);
+        }
+        let (&collider, _) = self.collider_entity.iter().find(|(_, &x)| x == e)?;
+        self.world
+            .collider(collider)
+            .map(onyx_physics::Collider::parent)
+    }
+
+    /// The body `e` owns (it holds the `RigidBody`, or is a static collider of its own).
+    pub(super) fn own_body(&self, e: hecs::Entity) -> Option<BodyHandle> {
+        self.links.get(e).map(|link| link.body)
+    }
+
     /// The first collider along a ray.
     pub fn raycast(&self, origin: Vec3, direction: Vec3, max_distance: f32) -> Option<RayHit> {
         let length = direction.length();
@@ -195,7 +235,7 @@ impl PhysicsSystem {
             max_distance,
             &QueryFilter::default(),
         )?;
-        let entity = self.entity_of.get(&hit.body)?;
+        let entity = self.collider_entity.get(&hit.collider)?;
         Some(RayHit {
             entity: to_api(*entity),
             point: hit.point,
@@ -240,6 +280,11 @@ impl PhysicsSystem {
             if let Ok(mut joint) = world.ecs.get::<&mut Joint>(e) {
                 joint.broken = true;
             }
+            events.push(Event::Physics(PhysicsEvent::JointBroke {
+                entity: to_api(e),
+                force: broken.force,
+                torque: broken.torque,
+            }));
             tracing::warn!(
                 entity = %to_api(e),
                 "physics: joint broke under {:.1} N, {:.1} N·m",
@@ -265,9 +310,11 @@ impl PhysicsSystem {
         for line in self.reports.sentences(&output, named) {
             tracing::warn!("{line}");
         }
-        let entity = |h: &BodyHandle| self.entity_of.get(h).or_else(|| self.departed.get(h));
+        let entity =
+            |h: &ColliderHandle| self.collider_entity.get(h).or_else(|| self.departed.get(h));
         for contact in &output.events {
-            let (Some(a), Some(b)) = (entity(&contact.body_a), entity(&contact.body_b)) else {
+            let (Some(a), Some(b)) = (entity(&contact.collider_a), entity(&contact.collider_b))
+            else {
                 continue;
             };
             let (a, b) = (to_api(*a), to_api(*b));
@@ -299,7 +346,7 @@ impl PhysicsSystem {
         self.write_back(world);
     }
 
-    /// The physics collider for a component, or the event that says why there is none (a
+    /// The physics collider for a component (placed and scaled by the caller), or the event that says why there is none (a
     /// model that cannot be loaded is a graphics asset failure naming the file).
     fn collider_desc(
         collider: &Collider,
@@ -353,7 +400,6 @@ impl PhysicsSystem {
             }
         };
         Ok(desc
-            .translation(Vec3::from(collider.offset))
             .density(collider.density)
             .restitution(collider.restitution)
             .static_friction(collider.static_friction)
@@ -363,29 +409,46 @@ impl PhysicsSystem {
     }
 
     /// Components → bodies in one pass over the simulated entities: builds new bodies,
-    /// rebuilds changed ones, removes those whose entity or components are gone, and carries
-    /// moved transforms and set velocities over. Unchanged entities cost one comparison.
+    /// rebuilds changed ones, replaces the colliders of bodies whose colliders changed,
+    /// removes those whose entity or components are gone, and carries moved transforms and
+    /// set velocities over. Unchanged entities cost one comparison each.
     fn sync(&mut self, world: &mut WorldState, events: &mut Vec<Event>) {
         self.sync_epoch += 1;
         let epoch = self.sync_epoch;
         let mut seen = 0;
-        let mut rebuild: Vec<(hecs::Entity, Transform, Pose, Collider, Option<RigidBody>)> =
-            Vec::new();
-        for (e, t, collider, rb) in world
-            .ecs
-            .query::<(hecs::Entity, &Transform, &Collider, Option<&RigidBody>)>()
-            .iter()
-        {
-            let pose = body_pose(world, e, t);
+        if !self.failed.is_empty() {
+            self.failed
+                .retain(|e, _| world.ecs.satisfies::<&Collider>(*e));
+        }
+        let mut rebuild: Vec<(hecs::Entity, Transform, Pose, Vec<PlacedCollider>)> = Vec::new();
+        let mut replace: Vec<(hecs::Entity, Vec<PlacedCollider>)> = Vec::new();
+        for group in compound::gather(&world.ecs) {
+            let e = group.owner;
+            let Ok(t) = world.ecs.get::<&Transform>(e).map(|t| *t) else {
+                continue;
+            };
+            let rb = world.ecs.get::<&RigidBody>(e).ok().map(|rb| *rb);
+            let colliders: Vec<PlacedCollider> = group
+                .colliders
+                .into_iter()
+                .filter(|c| self.failed.get(&c.entity) != Some(&(c.collider, c.placement)))
+                .collect();
+            if colliders.is_empty() {
+                continue;
+            }
+            let pose = body_pose(world, e, &t);
             let link = match self.links.get_mut(e) {
-                Some(link) if link.built_from == (rb.copied().map(config_only), *collider) => link,
+                Some(link) if link.rigid_body == rb.map(config_only) => link,
                 _ => {
-                    rebuild.push((e, *t, pose, *collider, rb.copied()));
+                    rebuild.push((e, t, pose, colliders));
                     continue;
                 }
             };
             link.seen = epoch;
             seen += 1;
+            if !link.carries(&colliders) {
+                replace.push((e, colliders));
+            }
             let dynamic = rb.is_some_and(|rb| rb.kind == BodyKind::Dynamic);
             let local_moved =
                 t.translation != link.written.translation || t.rotation != link.written.rotation;
@@ -412,7 +475,7 @@ impl PhysicsSystem {
                 } else {
                     body.set_pose(pose);
                 }
-                link.written = *t;
+                link.written = t;
                 link.written_pose = pose;
                 link.settled = false;
             }
@@ -435,57 +498,42 @@ impl PhysicsSystem {
                 self.remove(e);
             }
         }
-        if !self.failed.is_empty() {
-            self.failed
-                .retain(|e, _| world.ecs.satisfies::<&Collider>(*e));
+        for (e, colliders) in replace {
+            self.replace_colliders(world, e, &colliders, events);
         }
-        for (e, t, pose, collider, rb) in rebuild {
+        for (e, t, pose, colliders) in rebuild {
             self.remove(e);
-            if self.failed.get(&e) == Some(&collider) {
-                continue;
-            }
-            match Self::collider_desc(&collider, &world.assets, to_api(e)) {
-                Ok(desc) => {
-                    self.failed.remove(&e);
-                    self.build(e, &t, &pose, rb.as_ref(), collider, desc);
-                }
-                Err(event) => {
-                    events.push(event);
-                    self.failed.insert(e, collider);
-                }
-            }
+            let rb = world.ecs.get::<&RigidBody>(e).ok().map(|rb| *rb);
+            self.build(world, e, &t, &pose, rb.as_ref(), &colliders, events);
         }
     }
 
+    /// Builds a body for `e` with `colliders` on it; none is made when no collider can be.
+    #[allow(clippy::too_many_arguments)]
     fn build(
         &mut self,
+        world: &WorldState,
         e: hecs::Entity,
         t: &Transform,
         pose: &Pose,
         rb: Option<&RigidBody>,
-        collider: Collider,
-        desc: ColliderDesc,
+        colliders: &[PlacedCollider],
+        events: &mut Vec<Event>,
     ) {
         let body = self.world.insert_body(body_desc(rb, pose));
-        let _ = self.world.insert_collider(desc, body);
-        if let (Some(rb), Some(b)) = (rb, self.world.body_mut(body)) {
-            let mp = *b.mass_properties();
-            if rb.mass > 0.0 && mp.mass > 0.0 {
-                let k = rb.mass / mp.mass;
-                // Same shape of inertia, scaled to the requested mass.
-                b.set_mass_properties(Some(MassProperties {
-                    mass: rb.mass,
-                    local_com: mp.local_com,
-                    inertia: mp.inertia * k,
-                }));
-            }
+        let attached = self.attach(world, body, colliders, events);
+        if attached.is_empty() {
+            self.world.remove_body(body);
+            return;
         }
+        self.apply_mass(body, rb);
         self.entity_of.insert(body, e);
         self.links.insert(
             e,
             Link {
                 body,
-                built_from: (rb.copied().map(config_only), collider),
+                rigid_body: rb.copied().map(config_only),
+                colliders: attached,
                 written: *t,
                 written_pose: *pose,
                 parent_moved: false,
@@ -498,11 +546,122 @@ impl PhysicsSystem {
         );
     }
 
+    /// Puts `colliders` on `body`; those that cannot be built are reported (once) and left
+    /// out.
+    fn attach(
+        &mut self,
+        world: &WorldState,
+        body: BodyHandle,
+        colliders: &[PlacedCollider],
+        events: &mut Vec<Event>,
+    ) -> Vec<(PlacedCollider, ColliderHandle)> {
+        let mut attached = Vec::with_capacity(colliders.len());
+        for placed in colliders {
+            let entity = to_api(placed.entity);
+            let desc =
+                Self::collider_desc(&placed.collider, &world.assets, entity).and_then(|desc| {
+                    desc.scaled(placed.placement.scale).map_err(|message| {
+                        Event::Platform(PlatformEvent::Error {
+                            message: format!(
+                                "entity {entity}: collider not created: its scale {} {message}",
+                                placed.placement.scale
+                            ),
+                        })
+                    })
+                });
+            let (desc, made_uniform) = match desc {
+                Ok(built) => built,
+                Err(event) => {
+                    events.push(event);
+                    self.failed
+                        .insert(placed.entity, (placed.collider, placed.placement));
+                    continue;
+                }
+            };
+            self.failed.remove(&placed.entity);
+            if made_uniform && self.warned_scale.insert(placed.entity) {
+                let name = world
+                    .ecs
+                    .get::<&Name>(placed.entity)
+                    .ok()
+                    .map(|n| n.0.clone());
+                tracing::warn!(
+                    entity = %entity,
+                    "physics: {} has a non-uniform scale {}; its sphere or capsule collider \
+                     stays round, scaled by the largest component",
+                    name.map_or_else(|| format!("entity {entity}"), |n| format!("`{n}`")),
+                    placed.placement.scale
+                );
+            }
+            let Some(handle) = self
+                .world
+                .insert_collider(desc.local_pose(placed.placement.pose), body)
+            else {
+                continue;
+            };
+            self.collider_entity.insert(handle, placed.entity);
+            attached.push((*placed, handle));
+        }
+        attached
+    }
+
+    /// Swaps the colliders of `e`'s body for `colliders` (its motion is kept); the body goes
+    /// when none of them can be built.
+    fn replace_colliders(
+        &mut self,
+        world: &WorldState,
+        e: hecs::Entity,
+        colliders: &[PlacedCollider],
+        events: &mut Vec<Event>,
+    ) {
+        let Some(link) = self.links.get_mut(e) else {
+            return;
+        };
+        let body = link.body;
+        for (placed, handle) in std::mem::take(&mut link.colliders) {
+            self.world.remove_collider(handle);
+            self.collider_entity.remove(&handle);
+            self.departed.insert(handle, placed.entity);
+        }
+        if let Some(b) = self.world.body_mut(body) {
+            b.set_mass_properties(None);
+        }
+        let attached = self.attach(world, body, colliders, events);
+        if attached.is_empty() {
+            self.remove(e);
+            return;
+        }
+        let rb = world.ecs.get::<&RigidBody>(e).ok().map(|rb| *rb);
+        self.apply_mass(body, rb.as_ref());
+        if let Some(link) = self.links.get_mut(e) {
+            link.colliders = attached;
+        }
+    }
+
+    /// A `RigidBody` with a mass keeps the shape of its colliders' inertia, scaled to it.
+    fn apply_mass(&mut self, body: BodyHandle, rb: Option<&RigidBody>) {
+        let (Some(rb), Some(b)) = (rb, self.world.body_mut(body)) else {
+            return;
+        };
+        let mp = *b.mass_properties();
+        if rb.mass > 0.0 && mp.mass > 0.0 {
+            let k = rb.mass / mp.mass;
+            b.set_mass_properties(Some(MassProperties {
+                mass: rb.mass,
+                local_com: mp.local_com,
+                inertia: mp.inertia * k,
+            }));
+        }
+    }
+
     fn remove(&mut self, e: hecs::Entity) {
         if let Some(link) = self.links.remove(e) {
+            for (placed, handle) in &link.colliders {
+                self.collider_entity.remove(handle);
+                self.departed.insert(*handle, placed.entity);
+            }
             self.world.remove_body(link.body);
             self.entity_of.remove(&link.body);
-            self.departed.insert(link.body, e);
         }
     }
 

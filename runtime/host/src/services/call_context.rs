@@ -3,9 +3,10 @@
 use onyx_plugin_api::glam::Vec3;
 use onyx_plugin_api::host::{Blob, HostServices, PhysicsCommand, PluginRequest};
 use onyx_plugin_api::{
-    BuiltinId, BuiltinValue, Camera, Collider, Component, CtxError, CustomEvent, DebugLine, Entity,
-    EntityTransform, Event, GlobalTransform, InputState, InvalidValue, KeepPose, LogLevel, MeshId,
-    Parent, RayHit, Script, TextureId, Time, Transform,
+    BuiltinId, BuiltinValue, Camera, CharacterController, CharacterMove, Collider, ColliderShape,
+    Component, CtxError, CustomEvent, DebugLine, Entity, EntityTransform, Event, GlobalTransform,
+    InputState, InvalidValue, Joint, KeepPose, LogLevel, MeshId, Parent, QueryFilter, RayHit,
+    Script, TextureId, Time, Transform,
 };
 
 use crate::entity_id::{to_api, to_hecs};
@@ -504,5 +505,52 @@ impl HostServices for CallContext<'_> {
 
     fn raycast(&mut self, origin: Vec3, direction: Vec3, max_distance: f32) -> Option<RayHit> {
         self.state.physics.raycast(origin, direction, max_distance)
+    }
+
+    fn overlap(
+        &mut self,
+        shape: ColliderShape,
+        pose: Transform,
+        filter: QueryFilter,
+    ) -> Result<Vec<Entity>, CtxError> {
+        self.state
+            .physics
+            .overlap(shape, &pose, &filter)
+            .map_err(|message| CtxError::Invalid { message })
+    }
+
+    fn shape_cast(
+        &mut self,
+        shape: ColliderShape,
+        pose: Transform,
+        direction: Vec3,
+        max_distance: f32,
+        filter: QueryFilter,
+    ) -> Result<Option<RayHit>, CtxError> {
+        self.state
+            .physics
+            .shape_cast(shape, &pose, direction, max_distance, &filter)
+            .map_err(|message| CtxError::Invalid { message })
+    }
+
+    fn joint_coordinate(&mut self, entity: Entity) -> Result<Option<f32>, CtxError> {
+        let e = self.entity(entity)?;
+        if !self.state.world.ecs.satisfies::<&Joint>(e) {
+            return Err(missing(entity, "Joint"));
+        }
+        Ok(self.state.physics.joint_coordinate(e))
+    }
+
+    fn move_character(
+        &mut self,
+        entity: Entity,
+        desired: Vec3,
+        controller: &CharacterController,
+    ) -> Result<CharacterMove, CtxError> {
+        self.entity(entity)?;
+        self.state
+            .physics
+            .move_character(&mut self.state.world, entity, desired, controller)
+            .map_err(|message| CtxError::Invalid { message })
     }
 }

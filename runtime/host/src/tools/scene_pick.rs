@@ -46,14 +46,8 @@ fn collider_shape(
     Some((shape, Vec3::ZERO))
 }
 
-/// The rigid part of a world pose (translation and rotation): where physics puts a collider.
-fn rigid(pose: &Affine3A) -> Affine3A {
-    let (_, rotation, translation) = pose.to_scale_rotation_translation();
-    Affine3A::from_rotation_translation(rotation.normalize(), translation)
-}
-
 /// What `e` shows, as shapes to test: its visible mesh at its world pose, and its collider
-/// where physics puts it. A half-space collider counts only on an entity without a mesh (the
+/// as physics builds it (scaled with the entity). A half-space collider counts only on an entity without a mesh (the
 /// mesh shows the part of the ground that is meant: the sky above a floor picks nothing).
 fn candidates(world: &WorldState, mesh_bounds: &mut MeshBounds, e: hecs::Entity) -> Vec<Candidate> {
     let mut out = Vec::new();
@@ -76,9 +70,10 @@ fn candidates(world: &WorldState, mesh_bounds: &mut MeshBounds, e: hecs::Entity)
             let unbounded = matches!(shape, Shape::HalfSpace(_));
             if !(unbounded && mesh.is_some()) {
                 let offset = Vec3::from(collider.offset) + centre;
+                // Colliders scale with their entity, as physics builds them.
                 out.push(Candidate {
                     shape,
-                    to_world: rigid(&pose) * Affine3A::from_translation(offset),
+                    to_world: pose * Affine3A::from_translation(offset),
                 });
             }
         }
@@ -167,13 +162,10 @@ pub fn local_bounds(
         Shape::HalfSpace(_) => Vec3::new(0.5, 0.0, 0.5),
         Shape::ConvexHull(_) | Shape::TriMesh(_) => return None,
     };
-    // The collider sits at the entity's rigid pose: its box is given in the entity's frame,
-    // which also scales; divide the scale out so the outline lands on the collider.
-    let (scale, _, _) = world.world_pose(e).to_scale_rotation_translation();
-    let scale = scale.max(Vec3::splat(1e-6));
-    let middle = (Vec3::from(collider.offset) + centre) / scale;
+    // The collider scales with its entity, so its box in the entity's frame is its own.
+    let middle = Vec3::from(collider.offset) + centre;
     Some(Bounds {
-        min: middle - half / scale,
-        max: middle + half / scale,
+        min: middle - half,
+        max: middle + half,
     })
 }

@@ -17,6 +17,8 @@ pub struct QueryFilter {
     pub exclude_dynamic: bool,
     /// Only colliders these groups interact with ([`CollisionGroups::interacts_with`]).
     pub groups: Option<CollisionGroups>,
+    /// Skip sensors (trigger zones).
+    pub exclude_sensors: bool,
 }
 
 impl QueryFilter {
@@ -24,6 +26,7 @@ impl QueryFilter {
     #[must_use]
     pub fn accepts(&self, c: &Collider, body: Option<&RigidBody>) -> bool {
         if self.exclude_body == Some(c.parent)
+            || (self.exclude_sensors && c.sensor)
             || self.groups.is_some_and(|g| !g.interacts_with(c.groups))
         {
             return false;

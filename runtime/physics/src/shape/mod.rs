@@ -1,10 +1,12 @@
-//! Collision shapes: [`Shape`] and one file per primitive.
+//! Collision shapes: [`Shape`] and one file per primitive; `shape_scale.rs` stretches any
+//! of them by a scale ([`Shape::scaled`]).
 
 pub mod capsule;
 pub mod convex_core;
 pub mod convex_hull;
 pub mod cuboid;
 pub mod half_space;
+pub mod shape_scale;
 pub mod sphere;
 pub mod tri_mesh;
 
@@ -17,6 +19,7 @@ pub use convex_core::ConvexCore;
 pub use convex_hull::{ConvexHull, HullDimension, HullError, HullFace};
 pub use cuboid::Cuboid;
 pub use half_space::HalfSpace;
+pub use shape_scale::{ScaledShape, UNIFORM_SCALE_TOLERANCE};
 pub use sphere::Sphere;
 pub use tri_mesh::{TriMesh, TriMeshError};
 
