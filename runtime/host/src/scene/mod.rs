@@ -5,6 +5,7 @@
 //! - `scene_imports.rs`: [`ImportSettingsFile`], a model's scale, up axis and normals as
 //!   the scene's `imports` table gives them.
 //! - `scene_read.rs`: parse and check (version, physics, scene graph).
+//! - `scene_migrate.rs`: older formats brought to the current one as they are read.
 //! - `scene_spawn.rs`: spawn into a world, every value checked first.
 //! - `scene_save.rs`: capture a world, atomic write.
 //! - `scene_error.rs`: [`SceneError`].
@@ -14,6 +15,7 @@ pub mod gltf_import;
 mod scene_error;
 mod scene_file;
 mod scene_imports;
+mod scene_migrate;
 mod scene_read;
 mod scene_save;
 mod scene_spawn;

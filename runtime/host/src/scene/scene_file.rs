@@ -7,8 +7,9 @@ use serde::{Deserialize, Serialize};
 
 use crate::physics::ScenePhysics;
 
-/// The scene format this host writes. Version 2 added entity ids and parents.
-pub const SCENE_FORMAT_VERSION: u32 = 2;
+/// The scene format this host writes. Version 2 added entity ids and parents; in version 3
+/// colliders scale with their entity (older files are brought forward as they are read).
+pub const SCENE_FORMAT_VERSION: u32 = 3;
 /// The oldest scene format this host still reads.
 pub const OLDEST_SCENE_FORMAT_VERSION: u32 = 1;
 
@@ -16,7 +17,7 @@ pub const OLDEST_SCENE_FORMAT_VERSION: u32 = 1;
 ///
 /// ```ron
 /// (
-///     version: 2,
+///     version: 3,
 ///     physics: Some((preset: Balanced)),
 ///     entities: [
 ///         (

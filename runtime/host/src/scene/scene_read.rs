@@ -40,6 +40,10 @@ pub fn parse_scene(text: &str, path: &Path) -> Result<SceneFile, SceneError> {
             })?;
     }
     check_hierarchy(&scene, path)?;
+    let mut scene = scene;
+    for warning in super::scene_migrate::migrate(&mut scene) {
+        tracing::warn!("`{}`: {warning}", path.display());
+    }
     Ok(scene)
 }
 
