@@ -6,8 +6,10 @@
 //!
 //! `cargo run --release -p onyx-physics-bench --example spread -- poured_spheres [seeds]`
 
+use onyx_physics::glam::Quat;
 use onyx_physics::glam::Vec3;
 use onyx_physics_bench::engine::{BodyId, BodySpec, Engine, EngineKind, StepSettings};
+use onyx_physics_bench::joint_spec::JointSpec;
 use onyx_physics_bench::scenes::{all, Size};
 
 /// An engine whose dynamic bodies start shifted by up to 1 µm per axis.
@@ -38,11 +40,20 @@ impl Engine for Shifted {
         }
         self.inner.add(&spec)
     }
+    fn add_joint(&mut self, spec: &JointSpec) {
+        self.inner.add_joint(spec);
+    }
+    fn joint_count(&self) -> usize {
+        self.inner.joint_count()
+    }
     fn step(&mut self) {
         self.inner.step();
     }
     fn position(&self, id: BodyId) -> Vec3 {
         self.inner.position(id)
+    }
+    fn rotation(&self, id: BodyId) -> Quat {
+        self.inner.rotation(id)
     }
     fn velocity(&self, id: BodyId) -> Vec3 {
         self.inner.velocity(id)

@@ -4,6 +4,8 @@
 use onyx_physics::glam::{Quat, Vec3};
 use rapier3d::prelude as rp;
 
+use crate::joint_spec::{JointKindSpec, JointSpec};
+
 /// What the narrowphase's iterative queries did over a run.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct NarrowphaseTally {
@@ -250,10 +252,17 @@ pub trait Engine {
     fn kind(&self) -> EngineKind;
     /// Adds a body with its collider.
     fn add(&mut self, spec: &BodySpec) -> BodyId;
+    /// Adds a joint between bodies already added (the joined bodies stop colliding with
+    /// each other).
+    fn add_joint(&mut self, spec: &JointSpec);
+    /// Number of joints.
+    fn joint_count(&self) -> usize;
     /// One fixed step.
     fn step(&mut self);
     /// Centre position of a body.
     fn position(&self, id: BodyId) -> Vec3;
+    /// Orientation of a body.
+    fn rotation(&self, id: BodyId) -> Quat;
     /// Linear velocity of a body.
     fn velocity(&self, id: BodyId) -> Vec3;
     /// Angular velocity of a body.
@@ -292,6 +301,7 @@ pub trait Engine {
 pub struct OnyxEngine {
     world: onyx_physics::PhysicsWorld,
     bodies: Vec<onyx_physics::BodyHandle>,
+    joints: usize,
     tally: NarrowphaseTally,
     /// Broadphase, narrowphase, solve, integrate, ccd, sleep: seconds summed over steps.
     stages: [f64; 6],
@@ -310,6 +320,7 @@ impl OnyxEngine {
         Self {
             world: onyx_physics::PhysicsWorld::new(settings),
             bodies: Vec::new(),
+            joints: 0,
             tally: NarrowphaseTally::default(),
             stages: [0.0; 6],
         }
@@ -357,6 +368,54 @@ impl Engine for OnyxEngine {
         self.bodies.len() - 1
     }
 
+    fn add_joint(&mut self, spec: &JointSpec) {
+        use onyx_physics::JointDesc;
+        let desc = match spec.kind {
+            JointKindSpec::Revolute {
+                axis,
+                limits,
+                motor,
+            } => {
+                let mut d = JointDesc::revolute(axis);
+                if let Some([lo, hi]) = limits {
+                    d = d.limits(lo, hi);
+                }
+                if let Some(m) = motor {
+                    d = d.motor_velocity(m.speed, m.max_torque);
+                }
+                d
+            }
+            JointKindSpec::Prismatic { axis, limits } => {
+                let d = JointDesc::prismatic(axis);
+                match limits {
+                    Some([lo, hi]) => d.limits(lo, hi),
+                    None => d,
+                }
+            }
+            JointKindSpec::Spherical { axis, cone, twist } => {
+                let mut d = JointDesc::spherical().local_axis_a(axis).local_axis_b(axis);
+                if let Some(c) = cone {
+                    d = d.cone_limit(c);
+                }
+                if let Some([lo, hi]) = twist {
+                    d = d.limits(lo, hi);
+                }
+                d
+            }
+        }
+        .local_anchor_a(spec.anchor_a)
+        .local_anchor_b(spec.anchor_b);
+        let a = spec.a.map(|id| self.bodies[id]);
+        self.world
+            .insert_joint(desc, a, self.bodies[spec.b])
+            .expect("scene joints are valid (onyx)");
+        self.joints += 1;
+    }
+
+    fn joint_count(&self) -> usize {
+        self.joints
+    }
+
     fn step(&mut self) {
         let c = self.world.step().counters;
         let t = &mut self.tally;
@@ -383,6 +442,12 @@ impl Engine for OnyxEngine {
         self.world
             .body(self.bodies[id])
             .map_or(Vec3::NAN, |b| b.translation())
+    }
+
+    fn rotation(&self, id: BodyId) -> Quat {
+        self.world
+            .body(self.bodies[id])
+            .map_or(Quat::NAN, |b| b.rotation())
     }
 
     fn velocity(&self, id: BodyId) -> Vec3 {
@@ -448,10 +513,17 @@ impl Engine for OnyxEngine {
     }
 }
 
+/// rapier's motor damping factor for a velocity motor meant to be rigid (its compliance is
+/// `1 / (dt · factor)`, negligible at this value).
+const RIGID_MOTOR_DAMPING: f32 = 1.0e6;
+
 /// rapier3d behind [`Engine`].
 pub struct RapierEngine {
     world: rp::PhysicsWorld,
     bodies: Vec<rp::RigidBodyHandle>,
+    /// The fixed body at the origin, without collider, that stands for the world in joints.
+    ground: Option<rp::RigidBodyHandle>,
+    joints: usize,
 }
 
 fn rv(v: Vec3) -> rp::Vector {
@@ -473,6 +545,8 @@ impl RapierEngine {
         Self {
             world,
             bodies: Vec::new(),
+            ground: None,
+            joints: 0,
         }
     }
 }
@@ -514,6 +588,77 @@ impl Engine for RapierEngine {
         self.bodies.len() - 1
     }
 
+    fn add_joint(&mut self, spec: &JointSpec) {
+        let frame = |anchor: Vec3, axis: Vec3| {
+            rp::Pose::from_parts(
+                rv(anchor),
+                rp::Rotation::from_rotation_arc(rp::Vector::X, rv(axis.normalize())),
+            )
+        };
+        let joint: rp::GenericJoint = match spec.kind {
+            JointKindSpec::Revolute {
+                axis,
+                limits,
+                motor,
+            } => {
+                let mut j = rp::RevoluteJointBuilder::new(rv(axis.normalize()))
+                    .local_anchor1(rv(spec.anchor_a))
+                    .local_anchor2(rv(spec.anchor_b))
+                    .contacts_enabled(false);
+                if let Some(l) = limits {
+                    j = j.limits(l);
+                }
+                if let Some(m) = motor {
+                    // A rigid velocity motor bounded by its torque, as Onyx's: rapier's
+                    // damping factor is the inverse of the row's compliance, so a large one
+                    // leaves the velocity row stiff.
+                    j = j
+                        .motor_velocity(m.speed, RIGID_MOTOR_DAMPING)
+                        .motor_max_force(m.max_torque);
+                }
+                j.build().into()
+            }
+            JointKindSpec::Prismatic { axis, limits } => {
+                let mut j = rp::PrismaticJointBuilder::new(rv(axis.normalize()))
+                    .local_anchor1(rv(spec.anchor_a))
+                    .local_anchor2(rv(spec.anchor_b))
+                    .contacts_enabled(false);
+                if let Some(l) = limits {
+                    j = j.limits(l);
+                }
+                j.build().into()
+            }
+            JointKindSpec::Spherical { axis, cone, twist } => {
+                let mut j = rp::SphericalJointBuilder::new()
+                    .local_frame1(frame(spec.anchor_a, axis))
+                    .local_frame2(frame(spec.anchor_b, axis))
+                    .contacts_enabled(false);
+                if let Some(c) = cone {
+                    j = j
+                        .limits(rp::JointAxis::AngY, [-c, c])
+                        .limits(rp::JointAxis::AngZ, [-c, c]);
+                }
+                if let Some(t) = twist {
+                    j = j.limits(rp::JointAxis::AngX, t);
+                }
+                j.build().into()
+            }
+        };
+        let a = match spec.a {
+            Some(id) => self.bodies[id],
+            None => *self
+                .ground
+                .get_or_insert_with(|| self.world.insert_body(rp::RigidBodyBuilder::fixed())),
+        };
+        self.world
+            .insert_impulse_joint(a, self.bodies[spec.b], joint);
+        self.joints += 1;
+    }
+
+    fn joint_count(&self) -> usize {
+        self.joints
+    }
+
     fn step(&mut self) {
         self.world.step();
     }
@@ -523,6 +668,16 @@ impl Engine for RapierEngine {
             .bodies
             .get(self.bodies[id])
             .map_or(Vec3::NAN, |b| ov(b.translation()))
+    }
+
+    fn rotation(&self, id: BodyId) -> Quat {
+        self.world
+            .bodies
+            .get(self.bodies[id])
+            .map_or(Quat::NAN, |b| {
+                let q = b.rotation();
+                Quat::from_xyzw(q.x, q.y, q.z, q.w)
+            })
     }
 
     fn velocity(&self, id: BodyId) -> Vec3 {

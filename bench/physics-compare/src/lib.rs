@@ -9,6 +9,7 @@
 //! Run: `cargo run --release -p onyx-physics-bench -- [--quick] [--scenes a,b] [--out DIR]`.
 
 pub mod engine;
+pub mod joint_spec;
 pub mod output;
 pub mod runner;
 pub mod scenes;

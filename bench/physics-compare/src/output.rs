@@ -43,12 +43,12 @@ pub fn table_line(r: &Row) -> String {
 /// On I/O failure.
 pub fn write_csv(rows: &[Row], dir: &Path) -> anyhow::Result<PathBuf> {
     let mut s = String::from(
-        "scene,engine,hz,iterations,bodies,steps,ms_per_step,ms_per_sim_second,figure,error\n",
+        "scene,engine,hz,iterations,bodies,steps,ms_per_step,ms_per_sim_second,figure,error,joints\n",
     );
     for r in rows {
         let _ = writeln!(
             s,
-            "{},{},{},{},{},{},{},{},{},{}",
+            "{},{},{},{},{},{},{},{},{},{},{}",
             r.scene,
             r.engine.name(),
             r.settings.hz,
@@ -58,7 +58,8 @@ pub fn write_csv(rows: &[Row], dir: &Path) -> anyhow::Result<PathBuf> {
             r.ms_per_step,
             r.ms_per_sim_second,
             r.figure,
-            r.error
+            r.error,
+            r.joints
         );
     }
     let p = dir.join("results.csv");
@@ -154,6 +155,7 @@ pub fn write_markdown(rows: &[Row], dir: &Path, quick: bool) -> anyhow::Result<P
                 r.error
             );
         }
+        write_joint_cost(&mut s, rows, name);
         let details: Vec<String> = rows
             .iter()
             .filter(|r| r.scene == name)
@@ -175,6 +177,34 @@ pub fn write_markdown(rows: &[Row], dir: &Path, quick: bool) -> anyhow::Result<P
     let p = dir.join("summary.md");
     std::fs::write(&p, s)?;
     Ok(p)
+}
+
+/// For a scene with joints: each preset's cost per joint per step, µs (the whole step,
+/// contacts included, divided by the joints), Onyx next to rapier.
+fn write_joint_cost(s: &mut String, rows: &[Row], scene: &str) {
+    let mut parts = Vec::new();
+    for p in PhysicsPreset::ALL {
+        let cost = |e: EngineKind| {
+            rows.iter()
+                .find(|r| r.scene == scene && r.engine == e && preset_at(r.settings) == Some(p))
+                .filter(|r| r.joints > 0)
+                .map(|r| 1e3 * r.ms_per_step / r.joints as f64)
+        };
+        if let (Some(o), Some(r)) = (cost(EngineKind::Onyx), cost(EngineKind::Rapier)) {
+            parts.push(format!(
+                "{} onyx {o:.3} µs, rapier {r:.3} µs ({:.2}×)",
+                p.name(),
+                o / r
+            ));
+        }
+    }
+    if !parts.is_empty() {
+        let _ = writeln!(
+            s,
+            "\nCost per joint per step (whole step / joints): {}.",
+            parts.join("; ")
+        );
+    }
 }
 
 /// The Onyx preset whose step rate and substeps are `s`, if any.

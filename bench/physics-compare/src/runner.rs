@@ -184,6 +184,8 @@ pub struct Row {
     pub settings: StepSettings,
     /// Bodies in the scene.
     pub bodies: usize,
+    /// Joints in the scene.
+    pub joints: usize,
     /// Steps per run.
     pub steps: usize,
     /// Median ms per step (first step of each run excluded; median over repeats).
@@ -204,6 +206,7 @@ struct Measured {
     figure: f64,
     detail: Option<String>,
     bodies: usize,
+    joints: usize,
     steps: usize,
 }
 
@@ -238,6 +241,7 @@ fn run_once(scene: &dyn Scene, engine: EngineKind, s: StepSettings, size: Size) 
         figure: trial.figure(e.as_ref()),
         detail: trial.detail(e.as_ref()),
         bodies: e.len(),
+        joints: e.joint_count(),
         steps,
     }
 }
@@ -319,6 +323,7 @@ pub fn run_sweep(opts: &Options, mut on_row: impl FnMut(&Row)) -> anyhow::Result
                     engine,
                     settings: s,
                     bodies: m.bodies,
+                    joints: m.joints,
                     steps: m.steps,
                     ms_per_step,
                     ms_per_sim_second: ms_per_step * f64::from(s.hz),

@@ -36,7 +36,7 @@ fn quick_run_writes_csv_markdown_and_plots_with_finite_figures() {
     assert_eq!(lines.len(), 25, "CSV header + 24 rows, got {}", lines.len());
     assert!(lines[0].starts_with("scene,engine,hz,iterations"));
     for l in &lines[1..] {
-        assert_eq!(l.split(',').count(), 10, "CSV row {l:?}");
+        assert_eq!(l.split(',').count(), 11, "CSV row {l:?}");
     }
 
     let md = std::fs::read_to_string(&report.markdown).expect("markdown");

@@ -141,7 +141,8 @@ pub struct PhysicsSettings {
     /// Default: `true`
     pub ccd_enabled: bool,
     /// Joint stiffness, Hz: how fast the biased passes pull a joint's position error back
-    /// (clamped to half the substep rate, see `JOINT_STIFFNESS_MAX_SUBSTEP_FRACTION`).
+    /// (clamped to a quarter of the substep rate, see `JOINT_STIFFNESS_MAX_SUBSTEP_FRACTION`;
+    /// a joint carrying more than its own weight stiffens toward that clamp).
     /// Default: `60` (Box2D v3's: twice its contact stiffness)
     /// Too high: no better than rigid at the clamp. Too low: joints stretch and sag visibly
     /// under load (chains, heavy ends).

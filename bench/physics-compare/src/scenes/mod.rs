@@ -7,19 +7,26 @@
 use onyx_physics::glam::Vec3;
 
 use crate::engine::{BodyId, Engine, StepSettings};
+use crate::joint_spec::JointSpec;
 
 pub mod big_pyramid;
 pub mod bounce;
+pub mod bridge;
+pub mod chain;
 pub mod degenerate_hulls;
 pub mod far_origin;
 pub mod free_fall;
 pub mod frictionless_stacks;
+pub mod hinge_motor;
 pub mod incline;
 pub mod long_run;
 pub mod mass_ratio;
 pub mod mass_ratio_ladder;
+pub mod pendulum;
 pub mod poured_spheres;
+pub mod prismatic_limit;
 pub mod pyramid;
+pub mod ragdolls;
 pub mod restitution_ladder;
 pub mod rolling;
 pub mod rotation_energy;
@@ -103,6 +110,12 @@ pub fn all() -> Vec<&'static dyn Scene> {
         &mass_ratio_ladder::MassRatioLadder,
         &size_ladder::SizeLadder,
         &frictionless_stacks::FrictionlessStacks,
+        &pendulum::Pendulum,
+        &chain::Chain,
+        &hinge_motor::HingeMotor,
+        &prismatic_limit::PrismaticLimit,
+        &bridge::Bridge,
+        &ragdolls::Ragdolls,
     ]
 }
 
@@ -125,4 +138,40 @@ pub fn max_displacement(e: &dyn Engine, ids: &[(BodyId, Vec3)]) -> f64 {
         worst = worst.max(f64::from((p - p0).length()));
     }
     worst
+}
+
+/// A point given in a body's frame (or in world space for the world, `None`), in world space
+/// at the body's current pose.
+#[must_use]
+pub fn anchor_world(e: &dyn Engine, body: Option<BodyId>, local: Vec3) -> Vec3 {
+    match body {
+        Some(id) => e.position(id) + e.rotation(id) * local,
+        None => local,
+    }
+}
+
+/// How far apart a joint's two anchors are, m (0 for a joint that holds exactly).
+#[must_use]
+pub fn joint_gap(e: &dyn Engine, j: &JointSpec) -> f32 {
+    anchor_world(e, j.a, j.anchor_a).distance(anchor_world(e, Some(j.b), j.anchor_b))
+}
+
+/// Adds every joint of `joints` to `e` and hands them back.
+pub fn add_joints(e: &mut dyn Engine, joints: Vec<JointSpec>) -> Vec<JointSpec> {
+    for j in &joints {
+        e.add_joint(j);
+    }
+    joints
+}
+
+/// The largest of `values`, NaN if any is NaN (a body that blew up), 0 when empty.
+#[must_use]
+pub fn max_or_nan(values: impl IntoIterator<Item = f64>) -> f64 {
+    values.into_iter().fold(0.0, |w: f64, x| {
+        if w.is_nan() || x.is_nan() {
+            f64::NAN
+        } else {
+            w.max(x)
+        }
+    })
 }

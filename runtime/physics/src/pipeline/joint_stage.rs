@@ -6,18 +6,62 @@ use glam::{Quat, Vec3, Vec3A};
 use crate::body_handle::BodyHandle;
 use crate::body_type::BodyType;
 use crate::broken_joint::BrokenJoint;
+use crate::joint::JointImpulses;
 use crate::joint_desc::JointKind;
 use crate::joint_handle::JointHandle;
+use crate::physics_settings::PhysicsSettings;
 use crate::physics_world::PhysicsWorld;
 use crate::pose::Pose;
 use crate::solver::joint_constraint::{drive_softness, JointConstraint};
 use crate::solver::Softness;
 
-/// Joint stiffness never goes above this fraction of the substep rate, 1/s per Hz (Box2D
-/// v3 runs joints at twice its contact stiffness, itself at most a quarter of the substep
-/// rate). Bounded `(0, ∞)`: the soft step is stable at any stiffness; past about one period
-/// per two substeps a joint is as good as rigid and more only adds rounding.
-pub const JOINT_STIFFNESS_MAX_SUBSTEP_FRACTION: f32 = 0.5;
+/// Joint stiffness never goes above this fraction of the substep rate, 1/s per Hz: `h·ω` up
+/// to π/2. At half the substep rate (`h·ω = π`, Box2D v3's bound) the bench's chains and
+/// bridge went unstable wherever the bound was reached (30 Hz × 2, 30 × 4, 60 × 2: a 20-link
+/// chain holding 100× a link stretched 150–230 %, a 50-plank bridge's planks still moving at
+/// 13 m/s after 5 s), though a lone pendulum did not; at a quarter they settle. Bounded
+/// `(0, ∞)`: below it loaded joints stretch further. Not solved at one 30 Hz substep: there
+/// the quarter (7.5 Hz) lets a pendulum whose bob hangs 20 radii below its pivot spin up and
+/// blow up, and half (15 Hz) holds it but tears the 50-plank bridge apart.
+pub const JOINT_STIFFNESS_MAX_SUBSTEP_FRACTION: f32 = 0.25;
+
+/// The softness of one joint at substep `h`: `joint_hertz` stiffened for the load it carried
+/// last substep (its warm-start linear impulse `λ`, with a slider's or a distance joint's
+/// limit impulses, which carry a load along the axis), the mass-aware treatment contacts get
+/// (`Softness::load_hertz`, `Softness::for_supported_mass`). A soft joint's static stretch is
+/// `a / ω²` with `a = λ / (m_eff h)` its load over its own effective mass, so a link holding
+/// 100 links' weight stretched 100× a lone link's (the 100:1 chain 3 % of its length at
+/// every setting from 60 × 4 on); stiffened by `√(a / g)` it stretches about as much as a
+/// lone link, up to [`JOINT_STIFFNESS_MAX_SUBSTEP_FRACTION`] of the substep rate, with the
+/// damping ratio grown by the same factor so the heavy load does not ring on the light link.
+fn loaded_joint_softness(
+    s: &PhysicsSettings,
+    h: f32,
+    kind: &JointKind,
+    impulses: &JointImpulses,
+    inv_mass_sum: f32,
+) -> Softness {
+    let cap = JOINT_STIFFNESS_MAX_SUBSTEP_FRACTION / h;
+    let base = s.joint_hertz.min(cap);
+    let g = s.gravity.length();
+    let along_axis = match kind {
+        JointKind::Prismatic { .. } | JointKind::Distance { .. } => {
+            impulses.lower.abs() + impulses.upper.abs()
+        }
+        _ => 0.0,
+    };
+    let lambda = Vec3::from_array(impulses.linear).length() + along_axis;
+    let ratio = if g > 0.0 && inv_mass_sum > 0.0 && lambda.is_finite() {
+        lambda * inv_mass_sum / (g * h)
+    } else {
+        1.0
+    };
+    Softness::new(
+        Softness::load_hertz(base, ratio, cap),
+        s.joint_damping_ratio,
+        h,
+    )
+}
 
 /// One side of a joint at the step start.
 struct Side {
@@ -85,11 +129,6 @@ impl PhysicsWorld {
             return;
         }
         let s = self.settings;
-        let softness = Softness::new(
-            s.joint_hertz.min(JOINT_STIFFNESS_MAX_SUBSTEP_FRACTION / h),
-            s.joint_damping_ratio,
-            h,
-        );
         let side = |body: Option<BodyHandle>, frame: &Pose| -> Option<Side> {
             let Some(handle) = body else {
                 return Some(Side {
@@ -146,6 +185,13 @@ impl PhysicsWorld {
                 JointKind::Fixed | JointKind::Spherical { .. } => (None, None),
             };
             let (spring_softness, motor_softness) = drive_softness(spring, motor, h);
+            let softness = loaded_joint_softness(
+                &s,
+                h,
+                &joint.desc.kind,
+                &joint.impulses,
+                (inv_mass_a + inv_mass_b).max_element(),
+            );
             self.joint_constraints.push(JointConstraint {
                 joint: i,
                 body_a: a.index,
@@ -167,6 +213,7 @@ impl PhysicsWorld {
                 inv_h: 1.0 / h,
                 h,
                 impulses: joint.impulses,
+                rows: Default::default(),
             });
         }
         self.output.counters.joints = self.joint_constraints.len() as u32;

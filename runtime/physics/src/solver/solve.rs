@@ -57,20 +57,26 @@ pub(crate) fn solve_substeps(
     };
     for _ in 0..substeps {
         integrate_velocities(bodies, states, h);
-        for j in joints.iter() {
-            j.warm_start(bodies, states);
+        for j in joints.iter_mut() {
+            j.refresh(bodies, states);
+            j.warm_start(states);
         }
         batches.warm_start(states);
         for _ in 0..p.iterations.max(1) {
             for j in joints.iter_mut() {
-                j.solve(bodies, states, true);
+                j.solve(states, true);
             }
             batches.solve(states, solve_pass);
         }
         not_converged += integrate_positions(bodies, states, h, p);
+        if p.relax_iterations > 0 {
+            for j in joints.iter_mut() {
+                j.refresh(bodies, states);
+            }
+        }
         for _ in 0..p.relax_iterations {
             for j in joints.iter_mut() {
-                j.solve(bodies, states, false);
+                j.solve(states, false);
             }
             batches.solve(states, relax_pass);
         }
