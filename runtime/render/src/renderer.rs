@@ -29,7 +29,7 @@ use crate::render_settings::RenderSettings;
 use crate::render_stats::RenderStats;
 use crate::render_target::RenderTarget;
 use crate::renderer_init_error::RendererInitError;
-use crate::shadow::{ShadowMaps, ShadowPlan};
+use crate::shadow::{ShadowAnchor, ShadowMaps, ShadowPlan};
 use crate::texture::TextureCache;
 
 use bindings::Bindings;
@@ -57,6 +57,8 @@ pub struct Renderer {
     bindings: Bindings,
     batcher: Batcher,
     shadow_plan: ShadowPlan,
+    /// Where the cascades' texel grid is laid from (kept between frames).
+    shadow_anchor: ShadowAnchor,
     lines: Vec<LineRaw>,
     stats: RenderStats,
     msaa_warned: bool,
@@ -152,6 +154,7 @@ impl Renderer {
             bindings,
             batcher: Batcher::default(),
             shadow_plan: ShadowPlan::default(),
+            shadow_anchor: ShadowAnchor::default(),
             lines: Vec::new(),
             stats: RenderStats::default(),
             msaa_warned: false,

@@ -4,6 +4,7 @@
 //! - `frame_uniforms`: [`FrameUniforms`], the uniform block every shader reads.
 //! - `object_raw`: [`ObjectRaw`], one object's camera-relative transform and material factors.
 //! - `shadow_view_raw`: [`ShadowViewRaw`], one shadow pass's view-projection.
+//! - `local_light_raw`: one point or spot light in the frame uniforms.
 //! - `line_raw`: [`LineRaw`], one debug line on the GPU.
 //! - `growable_buffer`: a GPU buffer reused across frames, grown geometrically.
 //! - `batch_key`: what objects are grouped by, in camera and shadow passes.
@@ -16,6 +17,7 @@ mod batcher;
 mod frame_uniforms;
 mod growable_buffer;
 mod line_raw;
+mod local_light_raw;
 mod object_raw;
 mod shadow_view_raw;
 

@@ -26,7 +26,8 @@ impl Renderer {
         let camera = &scene.camera;
         let view_proj = camera.relative_view_projection(aspect);
 
-        let plan = ShadowPlan::new(camera, aspect, scene.lights, &self.settings);
+        let anchor = self.shadow_anchor.follow(camera.position);
+        let plan = ShadowPlan::new(camera, anchor, aspect, scene.lights, &self.settings);
         let maps_changed = self.shadow_maps.ensure(
             &device,
             self.settings.shadow_resolution,
@@ -50,6 +51,7 @@ impl Renderer {
             shadows: &plan,
             size,
             env_max_mip: EnvironmentMaps::max_mip(),
+            sky_image: self.environment.from_image,
             encode_srgb,
         });
         queue.write_buffer(&self.frame_buffer, 0, bytemuck::bytes_of(&uniforms));
