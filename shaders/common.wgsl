@@ -51,6 +51,7 @@ struct Frame {
     grid: vec4<f32>,
     // x: exposure multiplier, y: tone-mapping operator, z: 1 to encode sRGB here, w: sky on.
     output: vec4<f32>,
+    // rgb: procedural zenith colour, w: 1 when the sky is an image (sky.wgsl reads its cube).
     sky_zenith: vec4<f32>,
     sky_horizon: vec4<f32>,
     sky_ground: vec4<f32>,

@@ -1,5 +1,9 @@
 // Sky: the sky's radiance behind everything, one fullscreen triangle at depth 0 (infinitely
-// far, reverse-Z), drawn where no surface was.
+// far, reverse-Z), drawn where no surface was: the procedural sky's function, or the cube an
+// image sky was resampled into (frame.sky_zenith.w = 1).
+
+@group(2) @binding(6) var sky_sampler: sampler;
+@group(2) @binding(7) var sky_cube: texture_cube<f32>;
 
 struct SkyOut {
     @builtin(position) clip_position: vec4<f32>,
@@ -22,6 +26,9 @@ fn fs_main(in: SkyOut) -> @location(0) vec4<f32> {
     if (frame.camera_world.w < 0.5) {
         let p = frame.inv_view_proj * vec4<f32>(in.ndc, 0.5, 1.0);
         dir = normalize(p.xyz / p.w);
+    }
+    if (frame.sky_zenith.w > 0.5) {
+        return vec4<f32>(textureSampleLevel(sky_cube, sky_sampler, dir, 0.0).rgb, 1.0);
     }
     let color = sky_radiance(dir, frame.sky_zenith.rgb, frame.sky_horizon.rgb, frame.sky_ground.rgb);
     return vec4<f32>(color, 1.0);

@@ -29,10 +29,14 @@ use crate::render_settings::RenderSettings;
 use crate::render_stats::RenderStats;
 use crate::render_target::RenderTarget;
 use crate::renderer_init_error::RendererInitError;
-use crate::shadow::{ShadowMaps, ShadowPlan};
+use crate::shadow::{ShadowAnchor, ShadowMaps, ShadowPlan};
 use crate::texture::TextureCache;
 
 use bindings::Bindings;
+
+/// Smallest staging chunk of the per-frame uploads (larger writes get a chunk of their size,
+/// reused the next frame).
+const STAGING_CHUNK: u64 = 1 << 20;
 
 /// The renderer. One per device; not tied to a window: render into any number of
 /// [`crate::OffscreenTarget`]s and [`crate::SurfaceTarget`]s.
@@ -52,11 +56,15 @@ pub struct Renderer {
     /// One view-projection per shadow pass (uniform, dynamic offsets).
     shadow_view_buffer: GrowableBuffer,
     line_buffer: GrowableBuffer,
+    /// Staging memory of the uploads above, reused frame after frame.
+    belt: wgpu::util::StagingBelt,
     shadow_maps: ShadowMaps,
     environment: EnvironmentMaps,
     bindings: Bindings,
     batcher: Batcher,
     shadow_plan: ShadowPlan,
+    /// Where the cascades' texel grid is laid from (kept between frames).
+    shadow_anchor: ShadowAnchor,
     lines: Vec<LineRaw>,
     stats: RenderStats,
     msaa_warned: bool,
@@ -147,11 +155,13 @@ impl Renderer {
             index_buffer,
             shadow_view_buffer,
             line_buffer,
+            belt: wgpu::util::StagingBelt::new(device.clone(), STAGING_CHUNK),
             shadow_maps,
             environment,
             bindings,
             batcher: Batcher::default(),
             shadow_plan: ShadowPlan::default(),
+            shadow_anchor: ShadowAnchor::default(),
             lines: Vec::new(),
             stats: RenderStats::default(),
             msaa_warned: false,
@@ -294,20 +304,23 @@ impl Renderer {
             return Ok(self.stats);
         }
         let samples = self.sample_count();
-        let mut stats = self.prepare(scene, size, !target.format().is_srgb());
-        let Some(frame) = target.begin_frame(&self.gpu, samples)? else {
-            self.stats = RenderStats {
-                skipped: true,
-                ..stats
-            };
-            return Ok(self.stats);
-        };
         let mut encoder =
             self.gpu
                 .device()
                 .create_command_encoder(&wgpu::CommandEncoderDescriptor {
                     label: Some("onyx frame"),
                 });
+        let mut stats = self.prepare(scene, size, !target.format().is_srgb(), &mut encoder);
+        let Some(frame) = target.begin_frame(&self.gpu, samples)? else {
+            // The uploads are still submitted, so the staging belt gets its chunks back.
+            self.belt.finish_and_recall_on_submit(&encoder);
+            self.gpu.queue().submit([encoder.finish()]);
+            self.stats = RenderStats {
+                skipped: true,
+                ..stats
+            };
+            return Ok(self.stats);
+        };
         stats.shadow_draw_calls = self.encode_shadows(&mut encoder);
         stats.draw_calls = self.encode_scene(&mut encoder, &frame, scene.grid);
         self.encode_tonemap(&mut encoder, &frame);
@@ -319,6 +332,7 @@ impl Renderer {
             format: frame.overlay_format,
             size,
         });
+        self.belt.finish_and_recall_on_submit(&encoder);
         self.gpu.queue().submit([encoder.finish()]);
         target.end_frame(&self.gpu, frame);
         self.stats = stats;

@@ -138,3 +138,60 @@ fn a_scene_100_km_from_the_origin_renders_the_image_it_renders_at_the_origin() {
         common::MAX_DIFF_SHARE * 100.0
     );
 }
+
+/// The camera of [`shifted_scene`] moved by `step` small steps (1/64 m sideways, 1/128 m
+/// forward: exact in f32 100 km out), always turned the same way.
+fn stepped_camera(offset: Vec3, step: u32) -> Camera {
+    let start = Vec3::new(0.0, 2.5, 5.0);
+    let looking = Camera::perspective_look_at(start, Vec3::new(0.0, 0.3, 0.0), 0.9, 0.1, 200.0);
+    let moved = Vec3::new(step as f32 / 64.0, 0.0, -(step as f32) / 128.0);
+    Camera {
+        position: offset + start + moved,
+        ..looking
+    }
+}
+
+/// While the camera moves by small steps, consecutive frames 100 km out change no more than
+/// at the origin (no jitter of vertices or shadow edges), and every far frame is the frame at
+/// the origin.
+#[test]
+fn a_camera_moving_in_small_steps_100_km_out_does_not_shimmer() {
+    const STEPS: u32 = 5;
+    let far_offset = Vec3::new(1.0e5, 0.0, -1.0e5);
+    let frames = |offset: Vec3| {
+        let mut renderer = common::renderer();
+        let (objects, lights, _) = shifted_scene(&renderer, offset);
+        (0..STEPS)
+            .map(|step| {
+                let scene =
+                    RenderScene::new(stepped_camera(offset, step), &lights).with_objects(&objects);
+                common::render_image(&mut renderer, WIDTH, HEIGHT, &scene)
+            })
+            .collect::<Vec<_>>()
+    };
+    let near = frames(Vec3::ZERO);
+    let far = frames(far_offset);
+    for step in 1..STEPS as usize {
+        let near_change = common::differing_share(&near[step - 1], &near[step]);
+        let far_change = common::differing_share(&far[step - 1], &far[step]);
+        eprintln!(
+            "step {step}: {:.3} % of pixels change at the origin, {:.3} % 100 km out",
+            near_change * 100.0,
+            far_change * 100.0
+        );
+        assert!(
+            far_change <= near_change + 0.001,
+            "step {step}: 100 km out {:.3} % of pixels change between frames, at the origin {:.3} %",
+            far_change * 100.0,
+            near_change * 100.0
+        );
+    }
+    for (step, (a, b)) in near.iter().zip(&far).enumerate() {
+        let share = common::differing_share(a, b);
+        assert!(
+            share <= common::MAX_DIFF_SHARE,
+            "step {step}: the far frame differs from the one at the origin in {:.3} % of pixels",
+            share * 100.0
+        );
+    }
+}

@@ -34,6 +34,8 @@ pub struct WindowOptions {
     /// MSAA samples per pixel of the window's scene: 1 (off) or 4. Default 4 (the renderer
     /// falls back to 1, with a warning, where the adapter cannot).
     pub msaa_samples: u32,
+    /// The sky (procedural by default, or an HDR image).
+    pub sky: onyx_render::Sky,
 }
 
 impl Default for WindowOptions {
@@ -45,6 +47,7 @@ impl Default for WindowOptions {
             target_fps: 60.0,
             vsync: true,
             msaa_samples: 4,
+            sky: onyx_render::Sky::default(),
         }
     }
 }
@@ -71,6 +74,7 @@ fn window_graphics(
     window: Arc<Window>,
     vsync: bool,
     msaa_samples: u32,
+    sky: onyx_render::Sky,
 ) -> Result<WindowGraphics, String> {
     let size = window.inner_size();
     let instance = GpuContext::create_instance();
@@ -81,6 +85,7 @@ fn window_graphics(
     let settings = RenderSettings {
         shader_dir: crate::render::shader_dir(),
         msaa_samples,
+        sky,
         ..RenderSettings::default()
     };
     let renderer = Renderer::new(gpu, settings).map_err(|e| e.to_string())?;
@@ -204,6 +209,7 @@ impl ApplicationHandler for App<'_> {
                     window.clone(),
                     self.options.vsync,
                     self.options.msaa_samples,
+                    self.options.sky.clone(),
                 ) {
                     Ok(graphics) => {
                         let info = graphics.system.renderer().gpu().adapter_info();

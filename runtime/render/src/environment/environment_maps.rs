@@ -1,13 +1,18 @@
 //! [`EnvironmentMaps`]: the sky's prefiltered specular cube, irradiance cube and the BRDF
-//! integration table, baked on the GPU by `environment.wgsl`.
+//! integration table, baked on the GPU by `environment.wgsl` from the procedural sky or from
+//! an equirectangular HDR image ([`SkyImage`]), and the sky cube itself (the background of an
+//! image sky).
 
 use wgpu::util::DeviceExt;
 
+use super::sky_image::SkyImage;
 use crate::pipeline::{ShaderError, ShaderSource};
 use crate::sky::Sky;
 
-/// Side of the sky cube the prefiltering reads, texels (full mip chain).
+/// Side of the procedural sky cube the prefiltering reads, texels (full mip chain).
 const SOURCE_SIZE: u32 = 128;
+/// Side of the cube an image sky is resampled into: it is also the background, so sharper.
+const IMAGE_SOURCE_SIZE: u32 = 256;
 /// Side of the specular cube's level 0, texels.
 const SPECULAR_SIZE: u32 = 64;
 /// Mip levels of the specular cube: level `m` holds roughness `m / (SPECULAR_MIPS - 1)`.
@@ -40,6 +45,10 @@ pub(crate) struct EnvironmentMaps {
     pub(crate) irradiance: wgpu::TextureView,
     pub(crate) brdf: wgpu::TextureView,
     pub(crate) sampler: wgpu::Sampler,
+    /// The sky cube the maps were filtered from (drawn as the background of an image sky).
+    pub(crate) background: wgpu::TextureView,
+    /// Whether they come from the sky's image (else from its procedural colours).
+    pub(crate) from_image: bool,
     /// The sky they were baked from.
     pub(crate) sky: Sky,
 }
@@ -51,7 +60,8 @@ impl EnvironmentMaps {
     }
 
     /// Bakes `sky` with `environment.wgsl` from `source` (the embedded copy if the folder's
-    /// fails, which is returned as a warning).
+    /// fails, which is returned as a warning). A sky image that cannot be read is logged as
+    /// one warning and the procedural sky is baked instead.
     ///
     /// # Errors
     /// [`ShaderError`] when even the embedded shader does not compile.
@@ -74,6 +84,14 @@ impl EnvironmentMaps {
                 Some(error),
             ),
         };
+        let image = sky.image.as_deref().and_then(|path| {
+            SkyImage::load(path, IMAGE_SOURCE_SIZE, sky.intensity)
+                .inspect_err(|error| {
+                    tracing::warn!("{error}; keeping the procedural sky");
+                })
+                .ok()
+        });
+        let source_size = image.as_ref().map_or(SOURCE_SIZE, |i| i.size);
         let cube = |label, size, mips| {
             device.create_texture(&wgpu::TextureDescriptor {
                 label: Some(label),
@@ -87,12 +105,16 @@ impl EnvironmentMaps {
                 dimension: wgpu::TextureDimension::D2,
                 format: ENV_FORMAT,
                 usage: wgpu::TextureUsages::RENDER_ATTACHMENT
-                    | wgpu::TextureUsages::TEXTURE_BINDING,
+                    | wgpu::TextureUsages::TEXTURE_BINDING
+                    | wgpu::TextureUsages::COPY_DST,
                 view_formats: &[],
             })
         };
-        let source_mips = 32 - SOURCE_SIZE.leading_zeros();
-        let sky_cube = cube("onyx sky cube", SOURCE_SIZE, source_mips);
+        let source_mips = 32 - source_size.leading_zeros();
+        let sky_cube = cube("onyx sky cube", source_size, source_mips);
+        if let Some(image) = &image {
+            upload(queue, &sky_cube, image);
+        }
         let specular = cube("onyx sky specular", SPECULAR_SIZE, SPECULAR_MIPS);
         let irradiance = cube("onyx sky irradiance", IRRADIANCE_SIZE, 1);
         let brdf = device.create_texture(&wgpu::TextureDescriptor {
@@ -139,7 +161,8 @@ impl EnvironmentMaps {
             })
         };
         let mut draws: Vec<(wgpu::TextureView, &'static str, [f32; 4], bool)> = Vec::new();
-        for mip in 0..source_mips {
+        let procedural_mips = if image.is_some() { 0 } else { source_mips };
+        for mip in 0..procedural_mips {
             let size = (SOURCE_SIZE >> mip).max(1) as f32;
             for face in 0..6 {
                 draws.push((
@@ -153,13 +176,15 @@ impl EnvironmentMaps {
         for mip in 0..SPECULAR_MIPS {
             let size = (SPECULAR_SIZE >> mip).max(1) as f32;
             let roughness = mip as f32 / (SPECULAR_MIPS - 1) as f32;
+            // Level 0 is the sky itself: drawn from its function, or read from the image's cube.
+            let filtered = mip > 0 || image.is_some();
             for face in 0..6 {
-                let entry = if mip == 0 { "fs_sky" } else { "fs_specular" };
+                let entry = if filtered { "fs_specular" } else { "fs_sky" };
                 draws.push((
                     face_view(&specular, face, mip),
                     entry,
-                    [face as f32, roughness, size, SOURCE_SIZE as f32],
-                    mip > 0,
+                    [face as f32, roughness, size, source_size as f32],
+                    filtered,
                 ));
             }
         }
@@ -167,7 +192,7 @@ impl EnvironmentMaps {
             draws.push((
                 face_view(&irradiance, face, 0),
                 "fs_irradiance",
-                [face as f32, 1.0, IRRADIANCE_SIZE as f32, SOURCE_SIZE as f32],
+                [face as f32, 1.0, IRRADIANCE_SIZE as f32, source_size as f32],
                 true,
             ));
         }
@@ -322,9 +347,43 @@ impl EnvironmentMaps {
             irradiance: cube_view(&irradiance),
             brdf: brdf.create_view(&wgpu::TextureViewDescriptor::default()),
             sampler,
-            sky: *sky,
+            background: cube_view(&sky_cube),
+            from_image: image.is_some(),
+            sky: sky.clone(),
         };
         Ok((maps, warning))
+    }
+}
+
+/// Writes every level of every face of `image` into `cube`.
+fn upload(queue: &wgpu::Queue, cube: &wgpu::Texture, image: &SkyImage) {
+    for (mip, faces) in image.levels.iter().enumerate() {
+        let side = (image.size >> mip).max(1);
+        for (face, texels) in faces.iter().enumerate() {
+            queue.write_texture(
+                wgpu::TexelCopyTextureInfo {
+                    texture: cube,
+                    mip_level: mip as u32,
+                    origin: wgpu::Origin3d {
+                        x: 0,
+                        y: 0,
+                        z: face as u32,
+                    },
+                    aspect: wgpu::TextureAspect::All,
+                },
+                bytemuck::cast_slice(texels),
+                wgpu::TexelCopyBufferLayout {
+                    offset: 0,
+                    bytes_per_row: Some(side * 8),
+                    rows_per_image: Some(side),
+                },
+                wgpu::Extent3d {
+                    width: side,
+                    height: side,
+                    depth_or_array_layers: 1,
+                },
+            );
+        }
     }
 }
 

@@ -69,6 +69,8 @@ pub(crate) struct Batcher {
     indices: Vec<u32>,
     keys: KeyTable<BatchKey>,
     shadow_keys: KeyTable<ShadowKey>,
+    /// Per camera key, its shadow key (filled as met).
+    shadow_key_of: Vec<Option<u32>>,
     camera_entries: Vec<(u32, u32)>,
     blended: Vec<(f32, u32, u32)>,
     shadow_entries: Vec<Vec<(u32, u32)>>,
@@ -91,6 +93,7 @@ impl Batcher {
         self.indices.clear();
         self.keys.clear();
         self.shadow_keys.clear();
+        self.shadow_key_of.clear();
         self.camera_entries.clear();
         self.blended.clear();
         self.camera_batches.clear();
@@ -135,8 +138,8 @@ impl Batcher {
             let slot = self.objects.len() as u32;
             self.objects
                 .push(ObjectRaw::new(&object.transform, views.origin, material));
+            let key = self.keys.id(batch_key(object, views.missing));
             if in_camera {
-                let key = self.keys.id(batch_key(object, views.missing));
                 if blended {
                     let depth = center.dot(views.forward);
                     self.blended.push((depth, key, slot));
@@ -145,7 +148,12 @@ impl Batcher {
                 }
             }
             if shadow_mask != 0 {
-                let key = self.shadow_keys.id(shadow_key(object));
+                // The shadow key follows from the camera key: ask the table once per key.
+                if self.shadow_key_of.len() <= key as usize {
+                    self.shadow_key_of.resize(key as usize + 1, None);
+                }
+                let key = *self.shadow_key_of[key as usize]
+                    .get_or_insert_with(|| self.shadow_keys.id(shadow_key(&self.keys.get(key))));
                 let mut mask = shadow_mask;
                 while mask != 0 {
                     let view = mask.trailing_zeros() as usize;
@@ -276,19 +284,15 @@ fn batch_key(object: &DrawObject, missing: TextureHandle) -> BatchKey {
     }
 }
 
-fn shadow_key(object: &DrawObject) -> ShadowKey {
-    let material = &object.material;
-    let masked =
-        material.shading.uses_alpha() && matches!(material.alpha_mode, AlphaMode::Mask { .. });
+/// What a shadow pass groups an object of camera key `key` by (a function of it: the same
+/// mesh, sidedness and, for masked ones, the base colour map).
+fn shadow_key(key: &BatchKey) -> ShadowKey {
+    let masked = key.alpha == AlphaClass::Mask;
     ShadowKey {
         masked,
-        double_sided: material.double_sided,
-        mask_texture: if masked && material.shading.uses_texture() {
-            material.texture
-        } else {
-            None
-        },
-        mesh: object.mesh,
+        double_sided: key.double_sided,
+        mask_texture: if masked { key.maps.base_color } else { None },
+        mesh: key.mesh,
     }
 }
 

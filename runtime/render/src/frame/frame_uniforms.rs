@@ -3,6 +3,7 @@
 
 use glam::{Mat4, Vec3};
 
+use super::local_light_raw::LocalLightRaw;
 use crate::camera::Camera;
 use crate::light::{Lights, MAX_POINT_LIGHTS, MAX_SPOT_LIGHTS};
 use crate::render_settings::RenderSettings;
@@ -10,23 +11,6 @@ use crate::shadow::{ShadowPlan, MAX_CASCADES, MAX_LOCAL_SHADOW_LAYERS};
 
 /// Point and spot lights the shader loops over.
 pub(crate) const MAX_LOCAL_LIGHTS: usize = MAX_POINT_LIGHTS + MAX_SPOT_LIGHTS;
-
-/// One point or spot light as the shader sees it (`LocalLight` in WGSL).
-#[repr(C)]
-#[derive(Clone, Copy, Debug, Default, bytemuck::Pod, bytemuck::Zeroable)]
-pub(crate) struct LocalLightRaw {
-    /// xyz: camera-relative position, w: range (m).
-    position_range: [f32; 4],
-    /// rgb: colour × intensity, w: 0 point, 1 spot.
-    color_kind: [f32; 4],
-    /// xyz: spot direction (unit), w: cos of the outer angle.
-    direction_cos: [f32; 4],
-    /// x: 1 / (cos inner − cos outer), y: first shadow layer (−1: none), z: depth bias (m),
-    /// w: normal bias (texels).
-    cone_shadow: [f32; 4],
-    /// x: shadow near, y: shadow far, z: texel size one metre away, w: unused.
-    shadow_range: [f32; 4],
-}
 
 /// Mirrors `struct Frame` in `shaders/common.wgsl`, field for field.
 #[repr(C)]
@@ -62,6 +46,8 @@ pub(crate) struct FrameUniforms {
     /// x: exposure multiplier, y: tone-mapping operator, z: 1 to encode sRGB in the shader,
     /// w: 1 to draw the sky behind the scene.
     output: [f32; 4],
+    /// rgb: the procedural sky's zenith colour, w: 1 when the sky is an image (the background
+    /// reads its cube).
     sky_zenith: [f32; 4],
     sky_horizon: [f32; 4],
     sky_ground: [f32; 4],
@@ -76,6 +62,8 @@ pub(crate) struct FrameInputs<'a> {
     pub(crate) shadows: &'a ShadowPlan,
     pub(crate) size: (u32, u32),
     pub(crate) env_max_mip: f32,
+    /// The sky's maps come from its image (the background reads the sky cube).
+    pub(crate) sky_image: bool,
     pub(crate) encode_srgb: bool,
 }
 
@@ -89,6 +77,7 @@ impl FrameUniforms {
             shadows,
             size,
             env_max_mip,
+            sky_image,
             encode_srgb,
         } = *input;
         let origin = camera.position;
@@ -105,47 +94,12 @@ impl FrameUniforms {
         let mut count = 0;
         for (i, light) in lights.points.iter().take(MAX_POINT_LIGHTS).enumerate() {
             let shadow = shadows.points.get(i).copied().flatten();
-            raw_lights[count] = LocalLightRaw {
-                position_range: (light.position - origin)
-                    .extend(light.range.max(1e-4))
-                    .to_array(),
-                color_kind: (light.color * light.intensity).extend(0.0).to_array(),
-                direction_cos: [0.0, -1.0, 0.0, -2.0],
-                cone_shadow: [
-                    0.0,
-                    shadow.map_or(-1.0, |s| s.layer as f32),
-                    light.shadows.depth_bias,
-                    light.shadows.normal_bias,
-                ],
-                shadow_range: shadow.map_or([0.0; 4], |s| [s.near, s.far, s.texel_per_metre, 0.0]),
-            };
+            raw_lights[count] = LocalLightRaw::point(light, origin, shadow);
             count += 1;
         }
         for (i, light) in lights.spots.iter().take(MAX_SPOT_LIGHTS).enumerate() {
             let shadow = shadows.spots.get(i).copied().flatten();
-            let outer = light
-                .outer_angle
-                .clamp(1e-3, std::f32::consts::FRAC_PI_2 - 1e-3);
-            let inner = light.inner_angle.clamp(0.0, outer);
-            let (cos_outer, cos_inner) = (outer.cos(), inner.cos());
-            raw_lights[count] = LocalLightRaw {
-                position_range: (light.position - origin)
-                    .extend(light.range.max(1e-4))
-                    .to_array(),
-                color_kind: (light.color * light.intensity).extend(1.0).to_array(),
-                direction_cos: light
-                    .direction
-                    .normalize_or(Vec3::NEG_Z)
-                    .extend(cos_outer)
-                    .to_array(),
-                cone_shadow: [
-                    1.0 / (cos_inner - cos_outer).max(1e-4),
-                    shadow.map_or(-1.0, |s| s.layer as f32),
-                    light.shadows.depth_bias,
-                    light.shadows.normal_bias,
-                ],
-                shadow_range: shadow.map_or([0.0; 4], |s| [s.near, s.far, s.texel_per_metre, 0.0]),
-            };
+            raw_lights[count] = LocalLightRaw::spot(light, origin, shadow);
             count += 1;
         }
         let mut cascades = [[[0.0; 4]; 4]; MAX_CASCADES];
@@ -219,7 +173,9 @@ impl FrameUniforms {
                 if encode_srgb { 1.0 } else { 0.0 },
                 if settings.sky_background { 1.0 } else { 0.0 },
             ],
-            sky_zenith: (sky.zenith * sky.intensity).extend(0.0).to_array(),
+            sky_zenith: (sky.zenith * sky.intensity)
+                .extend(if sky_image { 1.0 } else { 0.0 })
+                .to_array(),
             sky_horizon: (sky.horizon * sky.intensity).extend(0.0).to_array(),
             sky_ground: (sky.ground * sky.intensity).extend(0.0).to_array(),
         }

@@ -1,7 +1,21 @@
-//! [`GrowableBuffer`]: a GPU buffer reused every frame, grown geometrically when too small.
+//! [`GrowableBuffer`]: a GPU buffer reused every frame, grown geometrically when too small,
+//! and [`Upload`]: how a frame's data reaches it.
 
 /// Smallest allocation, bytes.
 const MIN_CAPACITY: u64 = 4096;
+/// Alignment of a staging allocation (copies between buffers need multiples of 4).
+const COPY_ALIGNMENT: wgpu::BufferSize =
+    wgpu::BufferSize::new(wgpu::COPY_BUFFER_ALIGNMENT).unwrap();
+
+/// Where a frame's uploads go: copies recorded into the frame's encoder from a staging belt
+/// whose mapped buffers are reused frame after frame. (`Queue::write_buffer` makes a fresh
+/// staging buffer per call: for the 8 MB of 100,000 objects that cost page faults and an
+/// unmap every frame, more than the culling itself.)
+pub(crate) struct Upload<'a> {
+    pub(crate) device: &'a wgpu::Device,
+    pub(crate) belt: &'a mut wgpu::util::StagingBelt,
+    pub(crate) encoder: &'a mut wgpu::CommandEncoder,
+}
 
 /// A GPU buffer that is rewritten each frame and only reallocated (to the next power of two)
 /// when the data outgrows it.
@@ -28,14 +42,10 @@ impl GrowableBuffer {
         }
     }
 
-    /// Writes `bytes` at offset 0, growing the buffer first if needed; `true` when it grew (a
-    /// new buffer: bind groups naming it must be rebuilt).
-    pub(crate) fn write(
-        &mut self,
-        device: &wgpu::Device,
-        queue: &wgpu::Queue,
-        bytes: &[u8],
-    ) -> bool {
+    /// Writes `bytes` (a multiple of 4 long) at offset 0 through `upload`, growing the buffer
+    /// first if needed; `true` when it grew (a new buffer: bind groups naming it must be
+    /// rebuilt).
+    pub(crate) fn write(&mut self, upload: &mut Upload<'_>, bytes: &[u8]) -> bool {
         let mut grew = false;
         let needed = bytes.len() as u64;
         if needed > self.capacity {
@@ -45,11 +55,26 @@ impl GrowableBuffer {
                 bytes = self.capacity,
                 "growing GPU buffer"
             );
-            self.buffer = create(device, self.capacity, self.usage, self.label);
+            self.buffer = create(upload.device, self.capacity, self.usage, self.label);
             grew = true;
         }
-        if !bytes.is_empty() {
-            queue.write_buffer(&self.buffer, 0, bytes);
+        if let Some(size) = wgpu::BufferSize::new(needed) {
+            let staging = upload.belt.allocate(size, COPY_ALIGNMENT);
+            // Not mappable only when the device is lost: the frame is lost with it.
+            match staging.get_mapped_range_mut() {
+                Ok(mut view) => {
+                    view.copy_from_slice(bytes);
+                    drop(view);
+                    upload.encoder.copy_buffer_to_buffer(
+                        staging.buffer(),
+                        staging.offset(),
+                        &self.buffer,
+                        0,
+                        needed,
+                    );
+                }
+                Err(error) => tracing::debug!(label = self.label, %error, "upload skipped"),
+            }
         }
         grew
     }

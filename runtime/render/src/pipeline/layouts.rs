@@ -2,7 +2,7 @@
 //!
 //! Groups of the camera pass: 0 frame (uniforms + the objects' storage buffer), 1 material
 //! maps (or, for the wireframe, the mesh's own buffers), 2 lighting (shadow maps and the
-//! sky's prefiltered maps). Shadow passes: 0 the objects (binding 1) + the shadow view
+//! sky's prefiltered maps and its cube). Shadow passes: 0 the objects (binding 1) + the shadow view
 //! (binding 2, dynamic offset), 1 material maps (masked casters only). Tone mapping: its own
 //! group 0 (frame uniforms at 0, the HDR colour at 2). Bindings never collide with
 //! `common.wgsl`'s, which every shader includes.
@@ -17,7 +17,7 @@ pub(crate) struct Layouts {
     pub(crate) frame: wgpu::BindGroupLayout,
     /// Group 1: five material maps and their sampler.
     pub(crate) material: wgpu::BindGroupLayout,
-    /// Group 2: shadow maps, comparison sampler, sky maps, their sampler.
+    /// Group 2: shadow maps, comparison sampler, sky maps, their sampler, the sky cube.
     pub(crate) lighting: wgpu::BindGroupLayout,
     /// Group 1 of the wireframe: one mesh's vertex and index buffers, read as storage.
     pub(crate) mesh_storage: wgpu::BindGroupLayout,
@@ -25,11 +25,12 @@ pub(crate) struct Layouts {
     pub(crate) shadow_view: wgpu::BindGroupLayout,
     /// Group 0 of tone mapping: frame uniforms and the resolved HDR colour.
     pub(crate) tonemap: wgpu::BindGroupLayout,
-    /// Frame only (normals, grid, debug lines, sky).
+    /// Frame only (normals, grid, debug lines).
     pub(crate) frame_only: wgpu::PipelineLayout,
     /// Frame + material (unlit).
     pub(crate) textured: wgpu::PipelineLayout,
-    /// Frame + material + lighting (lit, lit-low, placeholder).
+    /// Frame + material + lighting (lit, lit-low, placeholder, and the sky: an image sky
+    /// reads its cube from the lighting group).
     pub(crate) lit: wgpu::PipelineLayout,
     /// Frame + mesh storage (wireframe: vertices pulled by index, no unindexed copy).
     pub(crate) wireframe: wgpu::PipelineLayout,
@@ -128,6 +129,7 @@ impl Layouts {
                 entry(4, S::FRAGMENT, texture(cube)),
                 entry(5, S::FRAGMENT, texture(d2)),
                 entry(6, S::FRAGMENT, filtering),
+                entry(7, S::FRAGMENT, texture(cube)),
             ],
         );
         let storage = |binding| entry(binding, S::VERTEX, objects());

@@ -284,7 +284,11 @@ fn create_pipeline(
             samples,
         },
         ShaderKind::Grid | ShaderKind::Sky => Shape {
-            layout: &layouts.frame_only,
+            layout: if key.kind == ShaderKind::Sky {
+                &layouts.lit
+            } else {
+                &layouts.frame_only
+            },
             buffers: &[],
             cull: None,
             fragment: Some("fs_main"),

@@ -164,6 +164,10 @@ fn lighting_group(
                 binding: 6,
                 resource: wgpu::BindingResource::Sampler(&environment.sampler),
             },
+            wgpu::BindGroupEntry {
+                binding: 7,
+                resource: view(&environment.background),
+            },
         ],
     })
 }

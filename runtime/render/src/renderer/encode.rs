@@ -176,6 +176,14 @@ impl Renderer {
             if let Some(pipeline) = self.pipelines.cached(&PipelineKey::scene(kind, samples)) {
                 pass.set_pipeline(pipeline);
                 current = None;
+                if kind == ShaderKind::Sky {
+                    // The lit layout (an image sky reads its cube from the lighting group); the
+                    // neutral maps fill group 1.
+                    if let Some(group) = self.textures.cached_material_group(&default_maps) {
+                        pass.set_bind_group(1, group, &[]);
+                    }
+                    pass.set_bind_group(2, &self.bindings.lighting, &[]);
+                }
                 pass.draw(0..FULLSCREEN_VERTICES, 0..1);
                 draws += 1;
             }

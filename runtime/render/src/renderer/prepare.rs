@@ -6,7 +6,9 @@ use std::time::Instant;
 
 use super::Renderer;
 use crate::environment::EnvironmentMaps;
-use crate::frame::{FrameInputs, FrameUniforms, FrameViews, LineRaw, MeshBounds, ShadowViewRaw};
+use crate::frame::{
+    FrameInputs, FrameUniforms, FrameViews, LineRaw, MeshBounds, ShadowViewRaw, Upload,
+};
 use crate::frustum::Frustum;
 use crate::render_scene::RenderScene;
 use crate::render_stats::RenderStats;
@@ -18,6 +20,7 @@ impl Renderer {
         scene: &RenderScene<'_>,
         size: (u32, u32),
         encode_srgb: bool,
+        encoder: &mut wgpu::CommandEncoder,
     ) -> RenderStats {
         let start = Instant::now();
         let device = self.gpu.device().clone();
@@ -26,7 +29,8 @@ impl Renderer {
         let camera = &scene.camera;
         let view_proj = camera.relative_view_projection(aspect);
 
-        let plan = ShadowPlan::new(camera, aspect, scene.lights, &self.settings);
+        let anchor = self.shadow_anchor.follow(camera.position);
+        let plan = ShadowPlan::new(camera, anchor, aspect, scene.lights, &self.settings);
         let maps_changed = self.shadow_maps.ensure(
             &device,
             self.settings.shadow_resolution,
@@ -50,6 +54,7 @@ impl Renderer {
             shadows: &plan,
             size,
             env_max_mip: EnvironmentMaps::max_mip(),
+            sky_image: self.environment.from_image,
             encode_srgb,
         });
         queue.write_buffer(&self.frame_buffer, 0, bytemuck::bytes_of(&uniforms));
@@ -75,24 +80,24 @@ impl Renderer {
             })
         });
 
-        let objects_grew = self.object_buffer.write(
-            &device,
-            &queue,
-            bytemuck::cast_slice(self.batcher.objects()),
-        );
-        self.index_buffer.write(
-            &device,
-            &queue,
-            bytemuck::cast_slice(self.batcher.indices()),
-        );
+        let mut upload = Upload {
+            device: &device,
+            belt: &mut self.belt,
+            encoder,
+        };
+        let objects_grew = self
+            .object_buffer
+            .write(&mut upload, bytemuck::cast_slice(self.batcher.objects()));
+        self.index_buffer
+            .write(&mut upload, bytemuck::cast_slice(self.batcher.indices()));
         let shadow_views: Vec<ShadowViewRaw> = plan
             .views
             .iter()
             .map(|v| ShadowViewRaw::new(&v.view_proj))
             .collect();
-        let views_grew =
-            self.shadow_view_buffer
-                .write(&device, &queue, bytemuck::cast_slice(&shadow_views));
+        let views_grew = self
+            .shadow_view_buffer
+            .write(&mut upload, bytemuck::cast_slice(&shadow_views));
         if objects_grew || views_grew {
             self.bindings.rebuild_buffers(
                 &device,
@@ -114,8 +119,13 @@ impl Renderer {
                 .filter(|line| categories.intersects(line.category))
                 .map(|line| LineRaw::new(line, width, origin)),
         );
+        let mut upload = Upload {
+            device: &device,
+            belt: &mut self.belt,
+            encoder,
+        };
         self.line_buffer
-            .write(&device, &queue, bytemuck::cast_slice(&self.lines));
+            .write(&mut upload, bytemuck::cast_slice(&self.lines));
 
         let triangles = self
             .batcher

@@ -1,7 +1,7 @@
 //! [`ShadowPlan`]: every shadow view of one frame — the directional light's cascades, then
 //! the views of the first shadowed spot and point lights — and where each is drawn.
 
-use glam::Mat4;
+use glam::{DVec3, Mat4};
 
 use super::cascades::{fit_cascades, Cascade};
 use super::local_shadows::{local_near, point_views, spot_view};
@@ -56,9 +56,11 @@ pub(crate) struct ShadowPlan {
 }
 
 impl ShadowPlan {
-    /// The shadow views for `lights` seen by `camera` on a target of `aspect`.
+    /// The shadow views for `lights` seen by `camera` on a target of `aspect`, the cascades
+    /// snapped on the texel grid laid from `anchor` (see [`super::ShadowAnchor`]).
     pub(crate) fn new(
         camera: &Camera,
+        anchor: DVec3,
         aspect: f32,
         lights: &Lights,
         settings: &RenderSettings,
@@ -70,15 +72,7 @@ impl ShadowPlan {
             .as_ref()
             .filter(|s| s.shadows.enabled && s.intensity > 0.0)
         {
-            plan.cascades = fit_cascades(
-                camera,
-                aspect,
-                sun.direction,
-                settings.cascades(),
-                settings.shadow_distance,
-                settings.shadow_cascade_lambda,
-                settings.shadow_resolution,
-            );
+            plan.cascades = fit_cascades(camera, anchor, aspect, sun.direction, settings);
             let matrices: Vec<Mat4> = plan.cascades.iter().map(|c| c.view_proj).collect();
             for (i, view_proj) in matrices.into_iter().enumerate() {
                 plan.push(view_proj, ShadowTarget::Cascade(i as u32));

@@ -106,6 +106,11 @@ pub struct HostArgs {
     /// screenshots never multisample (their output is compared with reference images).
     #[arg(long, value_name = "N", default_value_t = 4, value_parser = clap::value_parser!(u32).range(1..=4))]
     pub msaa: u32,
+    /// An equirectangular HDR image (Radiance .hdr) as the sky: it lights the scene and is
+    /// drawn behind it, instead of the procedural sky (window and screenshot). A file that
+    /// cannot be read is one warning; the procedural sky stays.
+    #[arg(long, value_name = "FILE.hdr")]
+    pub sky: Option<PathBuf>,
     /// Report a plugin call still running after SECS seconds, and every 10 s while it lasts
     /// (0: off; it is quiet anyway while a debugger is attached).
     #[arg(long, value_name = "SECS", default_value_t = 5.0, value_parser = parse_seconds)]

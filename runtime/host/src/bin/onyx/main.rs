@@ -135,6 +135,13 @@ fn start_host(args: &HostArgs, libraries: &[std::path::PathBuf]) -> Result<Host,
     Ok(host)
 }
 
+/// The sky `--sky` names (the procedural one without it).
+fn sky(args: &HostArgs) -> onyx_render::Sky {
+    args.sky
+        .clone()
+        .map_or_else(onyx_render::Sky::default, onyx_render::Sky::image)
+}
+
 /// The window `args` ask for, titled `title`.
 fn window_options(args: &HostArgs, title: &str) -> WindowOptions {
     WindowOptions {
@@ -143,6 +150,7 @@ fn window_options(args: &HostArgs, title: &str) -> WindowOptions {
         frames: args.frames,
         vsync: !args.no_vsync,
         msaa_samples: args.msaa,
+        sky: sky(args),
         ..Default::default()
     }
 }
@@ -168,7 +176,7 @@ fn run(run_args: RunArgs) -> Result<(), Failure> {
         (summary.frames, summary.render)
     };
     if let Some(path) = &run_args.screenshot {
-        screenshot(&mut host, render, args.size, path)?;
+        screenshot(&mut host, render, args, path)?;
     }
     host.shutdown();
     tracing::info!(frames, ticks = host.time().ticks, "run finished");
@@ -194,13 +202,14 @@ fn run(run_args: RunArgs) -> Result<(), Failure> {
 fn screenshot(
     host: &mut Host,
     render: Option<RenderSystem>,
-    (width, height): (u32, u32),
+    args: &HostArgs,
     path: &std::path::Path,
 ) -> Result<(), Failure> {
+    let (width, height) = args.size;
     let run_error = |e: anyhow::Error| Failure::Run(e);
     let mut system = match render {
         Some(system) => system,
-        None => RenderSystem::new_headless(RenderSystem::offscreen_settings())
+        None => RenderSystem::new_headless(RenderSystem::offscreen_settings().with_sky(sky(args)))
             .map_err(|e| run_error(e.into()))?,
     };
     let image = host
