@@ -56,8 +56,8 @@ pub fn root_transform(settings: &ImportSettings) -> Transform {
     }
 }
 
-/// The root (named after the file, at the origin with `root` as its transform, with an animator playing all of the file's
-/// animations when it has any) then one entity per node of `tree`, parents
+/// The root (named after the file, with `root` as its transform, with an animator playing
+/// all of the file's animations when it has any) then one entity per node of `tree`, parents
 /// before children. Mesh renderers name `FILE#mesh/N` with `FILE` as written beside the
 /// scene (the file's own name): spawned with the glTF path as the scene path, that is the
 /// file itself.
