@@ -593,8 +593,12 @@ impl Host {
     /// A scene that sets `physics` also sets the fixed step rate and the physics settings.
     /// The file becomes the world's scene file (`Ctx::scene_path`: the one tools save to),
     /// unless it is a glTF file (saving would overwrite the model).
+    ///
+    /// A glTF file is imported with the settings given for it
+    /// ([`Host::set_import_settings`], or an `imports` entry of a scene loaded before).
     pub fn load_scene(&mut self, path: &Path) -> Result<usize, SceneError> {
-        let loaded = scene::read_scene(path).and_then(|file| {
+        let settings = self.state.world.assets.file_import_settings(path);
+        let loaded = scene::read_scene_with(path, &settings).and_then(|file| {
             let world = &mut self.state.world;
             let n = scene::spawn_scene(&mut world.ecs, &mut world.assets, &file, path)?;
             world.hierarchy.invalidate();
@@ -619,6 +623,13 @@ impl Host {
             }
         }
         loaded
+    }
+
+    /// Brings the model file at `path` in with `settings` from now on, as a scene's
+    /// `imports` entry for it would: a glTF file loaded as a scene after this is scaled and
+    /// turned as one piece at its root (`onyx run --scene model.glb --import-scale ..`).
+    pub fn set_import_settings(&mut self, path: &Path, settings: onyx_render::ImportSettings) {
+        self.state.world.assets.set_import_settings(path, settings);
     }
 
     /// The file tools save the scene to: the last scene file loaded or saved (never a glTF

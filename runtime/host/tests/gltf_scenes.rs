@@ -8,11 +8,12 @@ use std::path::Path;
 
 use onyx_plugin_api::glam::{Quat, Vec3};
 use onyx_plugin_api::{Camera, Light, MeshRenderer, Name, Parent, Projection, Transform};
+use onyx_render::ImportSettings;
 use onyx_runtime::scene::{import_gltf_scene, GltfImportError, SceneEntity};
 use onyx_runtime::HeadlessHost;
 
 fn import(path: &Path) -> (Vec<SceneEntity>, Vec<String>) {
-    match import_gltf_scene(path, false) {
+    match import_gltf_scene(path, false, &ImportSettings::default()) {
         Ok(scene) => (scene.scene.entities, scene.warnings),
         Err(error) => panic!("{}: {error}", path.display()),
     }
@@ -228,7 +229,7 @@ fn a_required_unknown_extension_is_a_clear_error() {
         r#"{"asset":{"version":"2.0"},"extensionsUsed":["EXT_future"],"extensionsRequired":["EXT_future"]}"#,
     )
     .unwrap_or_else(|e| panic!("{e}"));
-    match import_gltf_scene(&path, true) {
+    match import_gltf_scene(&path, true, &ImportSettings::default()) {
         Err(error @ GltfImportError::RequiredExtension { .. }) => {
             assert!(error.to_string().contains("EXT_future"), "{error}");
         }
@@ -283,7 +284,7 @@ fn a_file_the_gltf_crate_panics_on_is_an_error_naming_it() {
         r#"{"asset":{"version":"2.0"},"meshes":[{"primitives":[{"attributes":{"POSITION":99}}]}],"nodes":[{"mesh":0}],"scenes":[{"nodes":[0]}]}"#,
     )
     .unwrap_or_else(|e| panic!("{e}"));
-    match import_gltf_scene(&path, true) {
+    match import_gltf_scene(&path, true, &ImportSettings::default()) {
         Err(error @ GltfImportError::Invalid { .. }) => {
             assert!(error.to_string().contains("bad-position.gltf"), "{error}");
         }

@@ -290,7 +290,11 @@ fn run_models(entries: &[PathBuf]) -> Outcome {
         }
         // A glTF file is also read as a scene (node tree, cameras, lights, animations).
         if onyx_render::mesh::is_gltf(entry) {
-            if let Err(e) = onyx_runtime::scene::gltf_import::import_gltf_scene(entry, true) {
+            if let Err(e) = onyx_runtime::scene::gltf_import::import_gltf_scene(
+                entry,
+                true,
+                &Default::default(),
+            ) {
                 outcome = Outcome::Refused(e.to_string());
             }
         }

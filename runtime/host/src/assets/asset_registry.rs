@@ -102,9 +102,26 @@ impl AssetRegistry {
         }
     }
 
-    /// How the model at `path` is imported: the settings given for its file (a piece of a
-    /// file, `file.glb#mesh/2`, has its file's), else the default.
+    /// How the model at `path` is imported: the settings given for its file, else the
+    /// default. A piece of a file (`file.glb#mesh/2`, drawn by a node of its imported node
+    /// tree) takes only its file's normals: it sits in the file's node space, so the file's
+    /// scale and up axis apply once, at the imported root's transform
+    /// ([`import_gltf_scene`](crate::scene::import_gltf_scene)), not again to each piece.
     pub fn import_settings(&self, path: &Path) -> ImportSettings {
+        let (file, piece) = SubAsset::split(path);
+        let settings = self.import_settings.get(&file).copied().unwrap_or_default();
+        match piece {
+            Some(_) => ImportSettings {
+                normals: settings.normals,
+                ..ImportSettings::default()
+            },
+            None => settings,
+        }
+    }
+
+    /// The settings given for the model file at `path` itself (a piece's path names its
+    /// file), else the default: what a glTF node tree is imported with.
+    pub fn file_import_settings(&self, path: &Path) -> ImportSettings {
         let (file, _) = SubAsset::split(path);
         self.import_settings.get(&file).copied().unwrap_or_default()
     }

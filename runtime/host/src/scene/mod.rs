@@ -26,6 +26,6 @@ pub use scene_file::{
     SceneComponent, SceneEntity, SceneFile, OLDEST_SCENE_FORMAT_VERSION, SCENE_FORMAT_VERSION,
 };
 pub use scene_imports::{ImportSettingsFile, NormalsFile, UpAxisFile};
-pub use scene_read::{parse_scene, read_scene};
+pub use scene_read::{parse_scene, read_scene, read_scene_with};
 pub use scene_save::{scene_from_world, write_scene};
 pub use scene_spawn::{spawn_scene, spawn_scene_entities};

@@ -1,6 +1,7 @@
 //! Reading a scene file: RON parsed with line and column errors, its version and physics
 //! checked, and its scene graph checked (unique ids, parents that exist, no cycles).
 
+use onyx_render::ImportSettings;
 use std::collections::HashMap;
 use std::path::Path;
 
@@ -49,10 +50,17 @@ pub fn parse_scene(text: &str, path: &Path) -> Result<SceneFile, SceneError> {
 
 /// Reads and parses the scene at `path`: a scene file, or a glTF file (`.gltf`, `.glb`)
 /// whose node tree becomes the scene, with a framing camera and a sun when it has none (each
-/// feature the import leaves out logged once).
+/// feature the import leaves out logged once), imported with the default settings.
 pub fn read_scene(path: &Path) -> Result<SceneFile, SceneError> {
+    read_scene_with(path, &ImportSettings::default())
+}
+
+/// [`read_scene`], a glTF file imported with `gltf` (its scale and up axis on the root, see
+/// [`import_gltf_scene`](super::import_gltf_scene)); a scene file's own `imports` table
+/// gives its models' settings, so `gltf` does not touch it.
+pub fn read_scene_with(path: &Path, gltf: &ImportSettings) -> Result<SceneFile, SceneError> {
     if super::is_gltf_scene(path) {
-        let imported = super::import_gltf_scene(path, true)?;
+        let imported = super::import_gltf_scene(path, true, gltf)?;
         for warning in &imported.warnings {
             tracing::warn!("`{}`: {warning}", path.display());
         }

@@ -80,7 +80,8 @@ impl ToolServices for CallContext<'_> {
         // the old ones go: handles are never reused, so one kept from before names nothing.
         let old = self.state.world.all_entities();
         let world = &mut self.state.world;
-        let opened = scene::read_scene(path).and_then(|file| {
+        let settings = world.assets.file_import_settings(path);
+        let opened = scene::read_scene_with(path, &settings).and_then(|file| {
             let count = scene::spawn_scene(&mut world.ecs, &mut world.assets, &file, path)?;
             Ok((count, file.physics))
         });
@@ -212,7 +213,9 @@ impl ToolServices for CallContext<'_> {
     fn import_gltf(&mut self, path: &str) -> Result<Entity, CtxError> {
         let path = Path::new(path);
         let world = &mut self.state.world;
-        let spawned = scene::import_gltf_scene(path, false)
+        // The open scene's `imports` entry for the file (if any) says how it comes in.
+        let settings = world.assets.file_import_settings(path);
+        let spawned = scene::import_gltf_scene(path, false, &settings)
             .map_err(SceneError::from)
             .and_then(|imported| {
                 for warning in &imported.warnings {

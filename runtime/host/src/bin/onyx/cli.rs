@@ -3,6 +3,7 @@
 use std::path::PathBuf;
 
 use clap::{Args, Parser, Subcommand};
+use onyx_runtime::scene::{ImportSettingsFile, NormalsFile, UpAxisFile};
 
 /// Onyx: a 3D application host that runs plugins.
 #[derive(Parser, Debug)]
@@ -72,9 +73,14 @@ pub struct HostArgs {
     /// A plugin to load: a library path or a NAME (repeatable; loaded in order).
     #[arg(long = "plugin", value_name = "PATH|NAME")]
     pub plugins: Vec<String>,
-    /// A scene file (RON) to load before the first frame.
+    /// A scene file (RON), or a glTF file (.gltf, .glb) whose node tree becomes the scene,
+    /// to load before the first frame.
     #[arg(long, value_name = "FILE")]
     pub scene: Option<PathBuf>,
+    /// How a glTF --scene is brought in (a RON scene gives its models' settings in its
+    /// `imports` table instead).
+    #[command(flatten)]
+    pub import: ImportArgs,
     /// Run without a window (and without a GPU): `run` as fast as possible, `dev` in real time.
     #[arg(long)]
     pub headless: bool,
@@ -119,6 +125,37 @@ pub struct HostArgs {
     /// leave threads or callbacks of a C library running after on_detach).
     #[arg(long)]
     pub keep_old_builds: bool,
+}
+
+/// Import settings for a glTF file given as `--scene`: the node tree is scaled and turned as
+/// one piece at its root; the normals apply to each of its meshes.
+#[derive(Args, Debug, Default)]
+pub struct ImportArgs {
+    /// Uniform scale of a glTF --scene (0.01 for a file in centimetres), applied once at
+    /// its root, so node positions scale with the meshes. Must be > 0.
+    #[arg(long, value_name = "FACTOR", value_parser = parse_scale)]
+    pub import_scale: Option<f32>,
+    /// Which axis of a glTF --scene points up: y (glTF's own) or z (turned to Y up as one
+    /// piece, at its root).
+    #[arg(long, value_name = "AXIS", value_parser = parse_up_axis)]
+    pub up_axis: Option<UpAxisFile>,
+    /// Normals generated for the meshes of a glTF --scene that lack them: smooth, flat, or
+    /// a crease angle in degrees (0 to 180; edges sharper stay sharp) [default: 45].
+    #[arg(long, value_name = "smooth|flat|DEGREES", value_parser = parse_normals)]
+    pub normals: Option<NormalsFile>,
+}
+
+impl ImportArgs {
+    /// The settings asked for, `None` when no option was given.
+    pub fn settings(&self) -> Option<ImportSettingsFile> {
+        (self.import_scale.is_some() || self.up_axis.is_some() || self.normals.is_some()).then(
+            || ImportSettingsFile {
+                scale: self.import_scale,
+                up_axis: self.up_axis.unwrap_or_default(),
+                normals: self.normals.unwrap_or_default(),
+            },
+        )
+    }
 }
 
 /// `onyx new-plugin`.
@@ -206,6 +243,35 @@ fn parse_seconds(text: &str) -> Result<f64, String> {
     Ok(seconds)
 }
 
+fn parse_scale(text: &str) -> Result<f32, String> {
+    let scale: f32 = text.parse().map_err(|e| format!("`{text}`: {e}"))?;
+    if !(scale.is_finite() && scale > 0.0) {
+        return Err(format!("`{text}` is not a scale (a number > 0)"));
+    }
+    Ok(scale)
+}
+
+fn parse_up_axis(text: &str) -> Result<UpAxisFile, String> {
+    match text.to_ascii_lowercase().as_str() {
+        "y" => Ok(UpAxisFile::Y),
+        "z" => Ok(UpAxisFile::Z),
+        _ => Err(format!("`{text}` is not an up axis (y or z)")),
+    }
+}
+
+fn parse_normals(text: &str) -> Result<NormalsFile, String> {
+    match text.to_ascii_lowercase().as_str() {
+        "smooth" => Ok(NormalsFile::Smooth),
+        "flat" => Ok(NormalsFile::Flat),
+        degrees => match degrees.parse::<f32>() {
+            Ok(d) if (0.0..=180.0).contains(&d) => Ok(NormalsFile::Crease(d)),
+            _ => Err(format!(
+                "`{text}` is not smooth, flat or a crease angle (0 to 180 degrees)"
+            )),
+        },
+    }
+}
+
 fn parse_size(text: &str) -> Result<(u32, u32), String> {
     let (w, h) = text
         .split_once(['x', 'X'])
@@ -239,5 +305,38 @@ mod tests {
         assert!(parse_size("640").is_err() && parse_size("0x5").is_err());
         assert_eq!(parse_seconds("2.5").unwrap(), 2.5);
         assert!(parse_seconds("-1").is_err() && parse_seconds("inf").is_err());
+    }
+
+    #[test]
+    fn import_options_parse_or_explain() {
+        let cli = Cli::try_parse_from([
+            "onyx",
+            "run",
+            "--scene",
+            "m.glb",
+            "--import-scale",
+            "0.01",
+            "--up-axis",
+            "Z",
+            "--normals",
+            "30",
+        ])
+        .unwrap_or_else(|e| panic!("{e}"));
+        let Command::Run(run) = cli.command else {
+            panic!("not run: {:?}", cli.command)
+        };
+        assert_eq!(
+            run.host.import.settings(),
+            Some(ImportSettingsFile {
+                scale: Some(0.01),
+                up_axis: UpAxisFile::Z,
+                normals: NormalsFile::Crease(30.0),
+            })
+        );
+        assert_eq!(ImportArgs::default().settings(), None);
+        assert!(parse_scale("0").is_err() && parse_scale("-2").is_err());
+        assert!(parse_up_axis("x").unwrap_err().contains("y or z"));
+        assert_eq!(parse_normals("Flat"), Ok(NormalsFile::Flat));
+        assert!(parse_normals("200").is_err() && parse_normals("round").is_err());
     }
 }

@@ -113,6 +113,23 @@ fn start_host(args: &HostArgs, libraries: &[std::path::PathBuf]) -> Result<Host,
         host.load_plugin(spec)
             .map_err(|e| Failure::Start(anyhow::Error::new(e)))?;
     }
+    if let Some(settings) = args.import.settings() {
+        // Checked by the parsers; a RON scene names its models' settings itself.
+        let settings = settings
+            .settings()
+            .map_err(|e| Failure::Start(anyhow::anyhow!(e)))?;
+        match &args.scene {
+            Some(scene) if onyx_runtime::scene::is_gltf_scene(scene) => {
+                host.set_import_settings(scene, settings);
+            }
+            _ => {
+                return Err(Failure::Start(anyhow::anyhow!(
+                    "--import-scale, --up-axis and --normals apply to a glTF --scene \
+                     (.gltf, .glb); a RON scene gives its models' settings in its `imports` table"
+                )))
+            }
+        }
+    }
     if let Some(scene) = &args.scene {
         host.load_scene(scene)
             .map_err(|e| Failure::Start(anyhow::Error::new(e)))?;

@@ -23,14 +23,21 @@ const AMBIENT: f32 = 0.15;
 
 /// Entities to add so the scene can be seen: a camera framing every mesh when the file has no
 /// camera, a sun and ambient light when it has no light. Ids start at `first_id`.
-pub fn default_view(document: &gltf::Document, tree: &NodeTree, first_id: u64) -> Vec<SceneEntity> {
+/// `root` is the imported root's matrix (the meshes are framed where it puts them).
+pub fn default_view(
+    document: &gltf::Document,
+    tree: &NodeTree,
+    root: Mat4,
+    first_id: u64,
+) -> Vec<SceneEntity> {
     let mut extra = Vec::new();
     let nodes: Vec<gltf::Node<'_>> = document.nodes().collect();
     let in_scene = |f: &dyn Fn(&gltf::Node<'_>) -> bool| {
         tree.order.iter().any(|&i| nodes.get(i).is_some_and(f))
     };
     if !in_scene(&|n| n.camera().is_some()) {
-        let (min, max) = bounds(&nodes, tree).unwrap_or((Vec3::splat(-1.0), Vec3::splat(1.0)));
+        let (min, max) =
+            bounds(&nodes, tree, root).unwrap_or((Vec3::splat(-1.0), Vec3::splat(1.0)));
         let centre = (min + max) * 0.5;
         let radius = ((max - min).length() * 0.5).max(1e-3);
         let fov_y = FOV_Y_DEGREES.to_radians();
@@ -89,9 +96,10 @@ fn looking_at(eye: Vec3, target: Vec3) -> Quat {
     Quat::from_mat3(&Mat3::from_cols(right, up, back)).normalize()
 }
 
-/// World-space box around every mesh of the scene, from the POSITION accessors' `min` and
-/// `max` (required by glTF, so no buffer is read); `None` when there is no mesh.
-fn bounds(nodes: &[gltf::Node<'_>], tree: &NodeTree) -> Option<(Vec3, Vec3)> {
+/// World-space box around every mesh of the scene under `root`, from the POSITION
+/// accessors' `min` and `max` (required by glTF, so no buffer is read); `None` when there is
+/// no mesh.
+fn bounds(nodes: &[gltf::Node<'_>], tree: &NodeTree, root: Mat4) -> Option<(Vec3, Vec3)> {
     let mut world: HashMap<usize, Mat4> = HashMap::new();
     let mut min = Vec3::splat(f32::INFINITY);
     let mut max = Vec3::splat(f32::NEG_INFINITY);
@@ -103,7 +111,7 @@ fn bounds(nodes: &[gltf::Node<'_>], tree: &NodeTree) -> Option<(Vec3, Vec3)> {
             .copied()
             .flatten()
             .and_then(|p| world.get(&p).copied())
-            .unwrap_or(Mat4::IDENTITY);
+            .unwrap_or(root);
         let matrix = parent * node_transform(node).matrix();
         world.insert(index, matrix);
         let Some(mesh) = node.mesh() else { continue };

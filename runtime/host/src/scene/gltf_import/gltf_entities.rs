@@ -8,7 +8,7 @@ use onyx_plugin_api::glam::{Mat4, Quat, Vec3};
 use onyx_plugin_api::{
     AnimatorFile, Camera, Light, MeshRendererFile, Projection, ShadingMode, Transform,
 };
-use onyx_render::SubAsset;
+use onyx_render::{ImportSettings, SubAsset, UpAxis};
 
 use super::gltf_node_tree::NodeTree;
 use crate::scene::SceneEntity;
@@ -37,13 +37,37 @@ const FALLBACK_RANGE: f32 = 10.0;
 /// (Blender's exports give 15..200 cd); too low leaves them dark.
 pub const ONYX_PER_CANDELA: f32 = 0.01;
 
-/// The root (named after the file, at the origin, with an animator playing all of the file's
-/// animations when it has any) then one entity per node of `tree`, parents
+/// The file's own name, as its pieces' mesh renderers and its `imports` entry write it.
+pub fn file_name(path: &Path) -> &Path {
+    Path::new(path.file_name().unwrap_or(path.as_os_str()))
+}
+
+/// The imported root's transform: at the origin, turned so the file's up axis is +Y (as
+/// [`UpAxis::to_y_up`]) and scaled uniformly, so the node tree comes in as one piece.
+pub fn root_transform(settings: &ImportSettings) -> Transform {
+    let rotation = match settings.up_axis {
+        UpAxis::Y => Quat::IDENTITY,
+        UpAxis::Z => Quat::from_rotation_x(-std::f32::consts::FRAC_PI_2),
+    };
+    Transform {
+        translation: Vec3::ZERO,
+        rotation,
+        scale: Vec3::splat(settings.scale),
+    }
+}
+
+/// The root (named after the file, with `root` as its transform, with an animator playing
+/// all of the file's animations when it has any) then one entity per node of `tree`, parents
 /// before children. Mesh renderers name `FILE#mesh/N` with `FILE` as written beside the
 /// scene (the file's own name): spawned with the glTF path as the scene path, that is the
 /// file itself.
-pub fn gltf_entities(document: &gltf::Document, tree: &NodeTree, path: &Path) -> Vec<SceneEntity> {
-    let file_name = Path::new(path.file_name().unwrap_or(path.as_os_str()));
+pub fn gltf_entities(
+    document: &gltf::Document,
+    tree: &NodeTree,
+    path: &Path,
+    root: Transform,
+) -> Vec<SceneEntity> {
+    let file_name = file_name(path);
     let root_name = path
         .file_stem()
         .map_or_else(|| "glTF".to_owned(), |s| s.to_string_lossy().into_owned());
@@ -58,7 +82,7 @@ pub fn gltf_entities(document: &gltf::Document, tree: &NodeTree, path: &Path) ->
     let mut entities = vec![SceneEntity {
         id: Some(ROOT_ID),
         name: Some(root_name),
-        transform: Some(Transform::IDENTITY),
+        transform: Some(root),
         animator,
         ..SceneEntity::default()
     }];
