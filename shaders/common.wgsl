@@ -47,7 +47,8 @@ struct Frame {
     counts: vec4<u32>,
     // x, y: viewport size in pixels; z, w: their reciprocals.
     viewport: vec4<f32>,
-    // x: grid cell size (m), y: grid fade distance (m), z: major line every N cells.
+    // x: grid cell size (m), y: grid fade distance (m), z: major line every N cells,
+    // w: unused.
     grid: vec4<f32>,
     // x: exposure multiplier, y: tone-mapping operator, z: 1 to encode sRGB here, w: sky on.
     output: vec4<f32>,
@@ -55,6 +56,10 @@ struct Frame {
     sky_zenith: vec4<f32>,
     sky_horizon: vec4<f32>,
     sky_ground: vec4<f32>,
+    // xy: the camera's world x and z modulo the major grid spacing (exact, from the CPU):
+    // lines are drawn from it, so they stay put where camera_world + hit would round (8 mm
+    // at 100 km in f32).
+    grid_phase: vec4<f32>,
 };
 
 // One drawn object: rows of its camera-relative model matrix and its material factors.

@@ -65,16 +65,19 @@ fn fs_main(in: GridOut) -> GridFragment {
         discard;
     }
     let hit = near_point + direction * t;
+    // World x, z for the axes (only near an axis does it matter, and there it is small);
+    // the lines repeat every major spacing, so they are drawn from the exact phase.
     let coord = hit.xz + frame.camera_world.xz;
+    let line_coord = hit.xz + frame.grid_phase.xy;
 
     let cell = max(frame.grid.x, 1e-4);
     let major = cell * max(frame.grid.z, 1.0);
-    let minor = line_coverage(coord, cell) * MINOR_ALPHA;
-    let major_lines = line_coverage(coord, major) * MAJOR_ALPHA;
+    let minor = line_coverage(line_coord, cell) * MINOR_ALPHA;
+    let major_lines = line_coverage(line_coord, major) * MAJOR_ALPHA;
     var color = LINE_COLOR;
     var alpha = max(minor, major_lines);
 
-    let derivative = fwidth(coord);
+    let derivative = fwidth(line_coord);
     let x_axis = axis_coverage(coord.y, derivative.y);
     let z_axis = axis_coverage(coord.x, derivative.x);
     if (x_axis > 0.0) {

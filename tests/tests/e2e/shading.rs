@@ -93,6 +93,9 @@ fn a_scene_100_km_from_the_origin_screenshots_like_at_the_origin() {
     let dir = tempfile::tempdir().expect("temp dir");
     let near = screenshot("shadow_box", dir.path());
     let far = screenshot("far_origin", dir.path());
+    // What differs (0.44 % at 160 × 120) is the editor grid's world axes: the blue Z axis
+    // through the middle of the origin's image and the red X axis across its shadow, which
+    // 100 km out are not there to draw. Shading, shadows and grid lines match.
     let differing = near
         .pixels()
         .zip(far.pixels())

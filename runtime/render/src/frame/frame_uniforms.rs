@@ -51,6 +51,10 @@ pub(crate) struct FrameUniforms {
     sky_zenith: [f32; 4],
     sky_horizon: [f32; 4],
     sky_ground: [f32; 4],
+    /// xy: the camera's world x and z modulo the major grid spacing. `%` of two floats is
+    /// exact, so the grid's lines are placed from a small number in the shader instead of
+    /// `camera_world + hit`, which rounds to 8 mm at 100 km.
+    grid_phase: [f32; 4],
 }
 
 /// What the frame uniforms are built from.
@@ -178,6 +182,16 @@ impl FrameUniforms {
                 .to_array(),
             sky_horizon: (sky.horizon * sky.intensity).extend(0.0).to_array(),
             sky_ground: (sky.ground * sky.intensity).extend(0.0).to_array(),
+            grid_phase: {
+                let major =
+                    settings.grid_cell_size.max(1e-4) * settings.grid_major_every.max(1) as f32;
+                [
+                    origin.x.rem_euclid(major),
+                    origin.z.rem_euclid(major),
+                    0.0,
+                    0.0,
+                ]
+            },
         }
     }
 }
