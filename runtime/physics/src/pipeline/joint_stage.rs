@@ -223,7 +223,7 @@ impl PhysicsWorld {
     /// the joints whose force or torque passed their threshold (reported once).
     pub(crate) fn finish_joints(&mut self) {
         for c in &self.joint_constraints {
-            let (force, torque) = c.reaction(&self.solver_bodies, &self.solver_states);
+            let (force, torque) = c.reaction();
             let Some(joint) = self.joints.arena.get_by_index_mut(c.joint) else {
                 continue;
             };

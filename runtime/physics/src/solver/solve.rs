@@ -55,10 +55,15 @@ pub(crate) fn solve_substeps(
         use_bias: false,
         ..solve_pass
     };
+    // Joint rows are built once per pose: here, and after each substep moves the bodies
+    // (the relax passes and the next substep's warm start and biased passes all see those
+    // poses; building again at each substep's start cost a third of the bridge's joints).
+    for j in joints.iter_mut() {
+        j.refresh(bodies, states);
+    }
     for _ in 0..substeps {
         integrate_velocities(bodies, states, h);
-        for j in joints.iter_mut() {
-            j.refresh(bodies, states);
+        for j in joints.iter() {
             j.warm_start(states);
         }
         batches.warm_start(states);
@@ -69,10 +74,8 @@ pub(crate) fn solve_substeps(
             batches.solve(states, solve_pass);
         }
         not_converged += integrate_positions(bodies, states, h, p);
-        if p.relax_iterations > 0 {
-            for j in joints.iter_mut() {
-                j.refresh(bodies, states);
-            }
+        for j in joints.iter_mut() {
+            j.refresh(bodies, states);
         }
         for _ in 0..p.relax_iterations {
             for j in joints.iter_mut() {
