@@ -40,7 +40,7 @@ pub const MIN_DISTANCE_JOINT_LENGTH: f32 = 1e-6;
 
 /// One row: the Jacobian `[−lin, −ang_a, lin, ang_b]` (body A's parts negated), with its
 /// angular parts through each body's inverse inertia (`ia = I_a⁻¹ ang_a`, `ib = I_b⁻¹ ang_b`),
-/// computed once per geometry (see [`JointConstraint::rows`]) instead of in every block
+/// computed once per geometry (see [`JointConstraint::refresh`]) instead of in every block
 /// entry and impulse: the 50-plank bridge's step cost 1.2× rapier's without it.
 #[derive(Clone, Copy, Debug, Default)]
 struct Row {
@@ -151,7 +151,12 @@ struct Block {
     inv: Mat3A,
 }
 
-/// Every row of a joint at the current substep, with the position error of each.
+/// Every row of a joint at the bodies' poses of the current pass, with the position error of
+/// each ([`JointConstraint::refresh`]). Positions move only between the biased and the relax
+/// passes, so they are built once at the step start and once after each substep's move, not
+/// once per warm start and pass. Kept apart from the [`JointConstraint`] (the solver holds
+/// one per joint), so that a build writes them in place: building them into the joint was a
+/// copy of ~1 kB per build.
 #[derive(Clone, Copy, Debug, Default)]
 pub(crate) struct Rows {
     /// The free axis (absent for a weld, or a rod with no direction).
@@ -193,11 +198,6 @@ pub(crate) struct JointConstraint {
     pub inv_h: f32,
     pub h: f32,
     pub impulses: JointImpulses,
-    /// The rows at the bodies' poses of the current pass ([`JointConstraint::refresh`]):
-    /// positions move only between the biased and the relax passes, so they are built once
-    /// at the step start and once after each substep's move, not once per warm start and
-    /// pass.
-    pub rows: Rows,
 }
 
 /// The angle of `q` about X, in (−π, π] (the twist of a swing–twist decomposition).
@@ -357,8 +357,9 @@ impl JointConstraint {
         }
     }
 
-    /// The rows at the bodies' current poses (`dq`, `dp` of the substep).
-    fn rows(&self, bodies: &[SolverBody], states: &[BodyState]) -> Rows {
+    /// Builds the rows at the bodies' current poses (`dq`, `dp` of the substep) for the passes
+    /// that follow.
+    pub(crate) fn refresh(&self, bodies: &[SolverBody], states: &[BodyState], rows: &mut Rows) {
         let (qa, qb) = (
             bodies[self.body_a as usize].dq,
             bodies[self.body_b as usize].dq,
@@ -371,7 +372,7 @@ impl JointConstraint {
         let fa = qa * self.frame_a0;
         let fb = qb * self.frame_b0;
         let ax = Vec3A::from(fa * Vec3::X);
-        let mut rows = Rows::default();
+        *rows = Rows::default();
         let point = |rows: &mut Rows| {
             for (i, e) in [Vec3A::X, Vec3A::Y, Vec3A::Z].into_iter().enumerate() {
                 rows.lin.rows[i] = Row::linear(e, ra, rb);
@@ -391,8 +392,8 @@ impl JointConstraint {
         };
         match self.kind {
             JointKind::Fixed => {
-                weld(&mut rows);
-                point(&mut rows);
+                weld(rows);
+                point(rows);
             }
             JointKind::Revolute {
                 limits,
@@ -414,13 +415,13 @@ impl JointConstraint {
                     rows.ang.c[i] = t.dot(c);
                 }
                 rows.ang.n = 2;
-                point(&mut rows);
+                point(rows);
             }
             JointKind::Prismatic { .. } => {
                 // The axis and its cross axes turn with A: their rows take the lever `ra + d`.
                 let lever = ra + d;
                 rows.axis = Some(Single::new(Row::linear(ax, lever, rb), ax.dot(d)));
-                weld(&mut rows);
+                weld(rows);
                 for (i, t) in [fa * Vec3::Y, fa * Vec3::Z].into_iter().enumerate() {
                     let t = Vec3A::from(t);
                     rows.lin.rows[i] = Row::linear(t, lever, rb);
@@ -447,7 +448,7 @@ impl JointConstraint {
                         rows.cone = Some(Single::new(Row::angular(-n / sin), cone - swing));
                     }
                 }
-                point(&mut rows);
+                point(rows);
             }
             JointKind::Distance { min, max, .. } => {
                 let length = d.length();
@@ -463,8 +464,7 @@ impl JointConstraint {
                 }
             }
         }
-        self.weigh(&mut rows);
-        rows
+        self.weigh(rows);
     }
 
     /// Fills each row's angular parts through the inverse inertias (`Row::ia`, `Row::ib`),
@@ -496,14 +496,8 @@ impl JointConstraint {
         }
     }
 
-    /// Builds the rows at the bodies' current poses for the passes that follow.
-    pub(crate) fn refresh(&mut self, bodies: &[SolverBody], states: &[BodyState]) {
-        self.rows = self.rows(bodies, states);
-    }
-
     /// Applies last substep's impulses (Box2D v3 warm start), at the refreshed geometry.
-    pub(crate) fn warm_start(&self, states: &mut [BodyState]) {
-        let rows = &self.rows;
+    pub(crate) fn warm_start(&self, rows: &Rows, states: &mut [BodyState]) {
         let mut v = self.load(states);
         let im = &self.impulses;
         if let Some(axis) = &rows.axis {
@@ -527,10 +521,7 @@ impl JointConstraint {
 
     /// One Gauss–Seidel pass over the joint's rows at the refreshed geometry: biased
     /// (`use_bias`, position error fed back softly) or relaxing (rigid, no bias).
-    pub(crate) fn solve(&mut self, states: &mut [BodyState], use_bias: bool) {
-        // The rows by reference and the impulses in a local: copying the rows into each
-        // pass was a `memcpy` of ~1 kB per joint.
-        let rows = &self.rows;
+    pub(crate) fn solve(&mut self, rows: &Rows, states: &mut [BodyState], use_bias: bool) {
         let mut im = self.impulses;
         let mut v = self.load(states);
         let soft = if use_bias {
@@ -672,10 +663,9 @@ impl JointConstraint {
     }
 
     /// The force (N) and torque (N·m) on body B over the last substep, from the accumulated
-    /// impulses at the rows of the last [`JointConstraint::refresh`] (the solver leaves them
-    /// at the bodies' final poses).
-    pub(crate) fn reaction(&self) -> (Vec3, Vec3) {
-        let rows = &self.rows;
+    /// impulses at `rows`, those of the last [`JointConstraint::refresh`] (the solver leaves
+    /// them at the bodies' final poses).
+    pub(crate) fn reaction(&self, rows: &Rows) -> (Vec3, Vec3) {
         let im = &self.impulses;
         let (mut force, mut torque) = (Vec3A::ZERO, Vec3A::ZERO);
         let mut add = |r: &Row, impulse: f32| {
