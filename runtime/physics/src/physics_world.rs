@@ -26,7 +26,7 @@ use crate::rigid_body::RigidBody;
 use crate::rigid_body_desc::RigidBodyDesc;
 use crate::solver::body_state::BodyState;
 use crate::solver::contact_constraint::ManifoldRef;
-use crate::solver::joint_constraint::JointConstraint;
+use crate::solver::joint_constraint::{JointConstraint, Rows};
 use crate::solver::solver_body::SolverBody;
 use crate::step_output::StepOutput;
 
@@ -42,6 +42,8 @@ pub struct PhysicsWorld {
     pub(crate) joints: JointSet,
     /// The joints the solver takes this step, prepared.
     pub(crate) joint_constraints: Vec<JointConstraint>,
+    /// Their rows in the solver, parallel to `joint_constraints`.
+    pub(crate) joint_rows: Vec<Rows>,
     pub(crate) broadphase: BroadPhase,
     pub(crate) narrowphase: NarrowPhase,
     pub(crate) output: StepOutput,
@@ -116,6 +118,7 @@ impl PhysicsWorld {
             colliders: ColliderSet::default(),
             joints: JointSet::default(),
             joint_constraints: Vec::new(),
+            joint_rows: Vec::new(),
             broadphase: BroadPhase::default(),
             narrowphase: NarrowPhase::default(),
             output: StepOutput::default(),

@@ -12,7 +12,7 @@ use crate::joint_handle::JointHandle;
 use crate::physics_settings::PhysicsSettings;
 use crate::physics_world::PhysicsWorld;
 use crate::pose::Pose;
-use crate::solver::joint_constraint::{drive_softness, JointConstraint};
+use crate::solver::joint_constraint::{drive_softness, JointConstraint, Rows};
 use crate::solver::Softness;
 
 /// Joint stiffness never goes above this fraction of the substep rate, 1/s per Hz: `h·ω` up
@@ -213,17 +213,18 @@ impl PhysicsWorld {
                 inv_h: 1.0 / h,
                 h,
                 impulses: joint.impulses,
-                rows: Default::default(),
             });
         }
+        self.joint_rows
+            .resize(self.joint_constraints.len(), Rows::default());
         self.output.counters.joints = self.joint_constraints.len() as u32;
     }
 
     /// Stores each joint's impulses (warm start of the next step) and reaction, and breaks
     /// the joints whose force or torque passed their threshold (reported once).
     pub(crate) fn finish_joints(&mut self) {
-        for c in &self.joint_constraints {
-            let (force, torque) = c.reaction(&self.solver_bodies, &self.solver_states);
+        for (c, rows) in self.joint_constraints.iter().zip(&self.joint_rows) {
+            let (force, torque) = c.reaction(rows);
             let Some(joint) = self.joints.arena.get_by_index_mut(c.joint) else {
                 continue;
             };

@@ -398,6 +398,7 @@ impl PhysicsWorld {
             &mut self.solver_states,
             &mut self.contact_batches,
             &mut self.joint_constraints,
+            &mut self.joint_rows,
             &params,
         );
         self.finish_joints();

@@ -40,7 +40,7 @@ pub const MIN_DISTANCE_JOINT_LENGTH: f32 = 1e-6;
 
 /// One row: the Jacobian `[−lin, −ang_a, lin, ang_b]` (body A's parts negated), with its
 /// angular parts through each body's inverse inertia (`ia = I_a⁻¹ ang_a`, `ib = I_b⁻¹ ang_b`),
-/// computed once per geometry (see [`JointConstraint::rows`]) instead of in every block
+/// computed once per geometry (see [`JointConstraint::refresh`]) instead of in every block
 /// entry and impulse: the 50-plank bridge's step cost 1.2× rapier's without it.
 #[derive(Clone, Copy, Debug, Default)]
 struct Row {
@@ -115,19 +115,56 @@ impl From<Softness> for Coeffs {
     }
 }
 
-/// Every row of a joint at the current substep, with the position error of each.
+/// A row solved alone (free axis, cone), with its coordinate and its effective mass.
+#[derive(Clone, Copy, Debug, Default)]
+struct Single {
+    row: Row,
+    /// The free coordinate, or the cone's remaining angle `cone − swing`.
+    x: f32,
+    /// `1 / (J M⁻¹ Jᵀ)`, 0 where the bodies cannot move along the row.
+    mass: f32,
+}
+
+impl Single {
+    fn new(row: Row, x: f32) -> Self {
+        Self { row, x, mass: 0.0 }
+    }
+}
+
+/// `K = LDLᵀ` of a block (see [`factor`], [`block_inverse`]).
+#[derive(Clone, Copy, Debug, Default)]
+struct Factor {
+    l: [[f32; 3]; 3],
+    /// The pivots; 0 for a row the bodies cannot move along.
+    d: [f32; 3],
+}
+
+/// Up to three equality rows solved together, with the position error of each.
+#[derive(Clone, Copy, Debug, Default)]
+struct Block {
+    rows: [Row; 3],
+    c: [f32; 3],
+    n: usize,
+    /// `K⁻¹` with the rows that cannot move dropped ([`block_inverse`]), 0 past `n`: found
+    /// once per build of the rows, so that each pass is a product. Factoring `K` in every
+    /// pass was 18 % of the 50-plank bridge's step.
+    inv: Mat3A,
+}
+
+/// Every row of a joint at the bodies' poses of the current pass, with the position error of
+/// each ([`JointConstraint::refresh`]). Positions move only between the biased and the relax
+/// passes, so they are built once at the step start and once after each substep's move, not
+/// once per warm start and pass. Kept apart from the [`JointConstraint`] (the solver holds
+/// one per joint), so that a build writes them in place: building them into the joint was a
+/// copy of ~1 kB per build.
 #[derive(Clone, Copy, Debug, Default)]
 pub(crate) struct Rows {
-    /// The free axis and its coordinate (absent for a weld, or a rod with no direction).
-    axis: Option<(Row, f32)>,
-    /// A ball joint's cone: its row and the remaining angle `cone − swing`.
-    cone: Option<(Row, f32)>,
-    lin: [Row; 3],
-    lin_c: [f32; 3],
-    n_lin: usize,
-    ang: [Row; 3],
-    ang_c: [f32; 3],
-    n_ang: usize,
+    /// The free axis (absent for a weld, or a rod with no direction).
+    axis: Option<Single>,
+    /// A ball joint's cone.
+    cone: Option<Single>,
+    lin: Block,
+    ang: Block,
 }
 
 /// A joint prepared for one step (see the module docs).
@@ -161,10 +198,6 @@ pub(crate) struct JointConstraint {
     pub inv_h: f32,
     pub h: f32,
     pub impulses: JointImpulses,
-    /// The rows at the bodies' poses of the current pass ([`JointConstraint::refresh`]):
-    /// positions move only between the biased and the relax passes, so each substep builds
-    /// them twice, not once per warm start and pass.
-    pub rows: Rows,
 }
 
 /// The angle of `q` about X, in (−π, π] (the twist of a swing–twist decomposition).
@@ -184,10 +217,9 @@ fn angle_difference(a: f32, b: f32) -> f32 {
     }
 }
 
-/// Solves `K x = b` for a symmetric positive semi-definite `K` of `n ≤ 3` rows by `LDLᵀ`,
-/// dropping rows whose pivot is below [`BLOCK_PIVOT_EPSILON`] of the largest diagonal (their
-/// `x` is 0).
-fn solve_block(k: &[[f32; 3]; 3], b: [f32; 3], n: usize) -> [f32; 3] {
+/// Factors a symmetric positive semi-definite `K` of `n ≤ 3` rows as `LDLᵀ`, dropping rows
+/// whose pivot is below [`BLOCK_PIVOT_EPSILON`] of the largest diagonal (see [`substitute`]).
+fn factor(k: &[[f32; 3]; 3], n: usize) -> Factor {
     let scale = (0..n).map(|i| k[i][i]).fold(0.0f32, f32::max);
     let mut l = [[0.0f32; 3]; 3];
     let mut d = [0.0f32; 3];
@@ -206,6 +238,63 @@ fn solve_block(k: &[[f32; 3]; 3], b: [f32; 3], n: usize) -> [f32; 3] {
             l[i][j] = if d[j] > 0.0 { lij / d[j] } else { 0.0 };
         }
     }
+    Factor { l, d }
+}
+
+/// The linear map `b ↦ x` of [`substitute`] as a matrix (0 past `n`): by the cofactors where
+/// every pivot is kept (one division), else column by column from the `LDLᵀ` factors.
+fn block_inverse(k: &[[f32; 3]; 3], n: usize) -> Mat3A {
+    let scale = (0..n).map(|i| k[i][i]).fold(0.0f32, f32::max);
+    let eps = BLOCK_PIVOT_EPSILON * scale;
+    // The pivots of `LDLᵀ` are the ratios of the leading minors: d₀ = m₁, d₁ = m₂/m₁,
+    // d₂ = m₃/m₂; each compared with `eps` as `factor` does, without the divisions.
+    let m1 = k[0][0];
+    let m2 = k[0][0] * k[1][1] - k[0][1] * k[0][1];
+    let inv = match n {
+        0 => return Mat3A::ZERO,
+        1 if m1 > eps => Some(Mat3A::from_diagonal(Vec3::new(1.0 / m1, 0.0, 0.0))),
+        2 if m1 > eps && m2 > eps * m1 => {
+            let r = 1.0 / m2;
+            Some(Mat3A::from_cols(
+                Vec3A::new(k[1][1] * r, -k[0][1] * r, 0.0),
+                Vec3A::new(-k[0][1] * r, k[0][0] * r, 0.0),
+                Vec3A::ZERO,
+            ))
+        }
+        3 => {
+            // Cofactors of the symmetric `K`.
+            let c00 = k[1][1] * k[2][2] - k[1][2] * k[1][2];
+            let c01 = k[0][2] * k[1][2] - k[0][1] * k[2][2];
+            let c02 = k[0][1] * k[1][2] - k[0][2] * k[1][1];
+            let c11 = k[0][0] * k[2][2] - k[0][2] * k[0][2];
+            let c12 = k[0][1] * k[0][2] - k[0][0] * k[1][2];
+            let c22 = m2;
+            let m3 = k[0][0] * c00 + k[0][1] * c01 + k[0][2] * c02;
+            (m1 > eps && m2 > eps * m1 && m3 > eps * m2).then(|| {
+                let r = 1.0 / m3;
+                Mat3A::from_cols(
+                    Vec3A::new(c00, c01, c02) * r,
+                    Vec3A::new(c01, c11, c12) * r,
+                    Vec3A::new(c02, c12, c22) * r,
+                )
+            })
+        }
+        _ => None,
+    };
+    inv.unwrap_or_else(|| {
+        let f = factor(k, n);
+        let col = |i: usize| {
+            let mut e = [0.0f32; 3];
+            e[i] = 1.0;
+            Vec3A::from(substitute(&f, e, n))
+        };
+        Mat3A::from_cols(col(0), col(1), col(2))
+    })
+}
+
+/// Solves `K x = b` with `K`'s [`factor`]; a dropped row's `x` is 0.
+fn substitute(f: &Factor, b: [f32; 3], n: usize) -> [f32; 3] {
+    let (l, d) = (&f.l, &f.d);
     // L y = b, D z = y, Lᵀ x = z.
     let mut y = [0.0f32; 3];
     for i in 0..n {
@@ -268,8 +357,9 @@ impl JointConstraint {
         }
     }
 
-    /// The rows at the bodies' current poses (`dq`, `dp` of the substep).
-    fn rows(&self, bodies: &[SolverBody], states: &[BodyState]) -> Rows {
+    /// Builds the rows at the bodies' current poses (`dq`, `dp` of the substep) for the passes
+    /// that follow.
+    pub(crate) fn refresh(&self, bodies: &[SolverBody], states: &[BodyState], rows: &mut Rows) {
         let (qa, qb) = (
             bodies[self.body_a as usize].dq,
             bodies[self.body_b as usize].dq,
@@ -282,28 +372,28 @@ impl JointConstraint {
         let fa = qa * self.frame_a0;
         let fb = qb * self.frame_b0;
         let ax = Vec3A::from(fa * Vec3::X);
-        let mut rows = Rows::default();
+        *rows = Rows::default();
         let point = |rows: &mut Rows| {
             for (i, e) in [Vec3A::X, Vec3A::Y, Vec3A::Z].into_iter().enumerate() {
-                rows.lin[i] = Row::linear(e, ra, rb);
-                rows.lin_c[i] = d[i];
+                rows.lin.rows[i] = Row::linear(e, ra, rb);
+                rows.lin.c[i] = d[i];
             }
-            rows.n_lin = 3;
+            rows.lin.n = 3;
         };
         let weld = |rows: &mut Rows| {
             let e = fb * fa.inverse();
             let e = if e.w < 0.0 { -e } else { e };
             let c = 2.0 * Vec3A::new(e.x, e.y, e.z);
             for (i, axis) in [Vec3A::X, Vec3A::Y, Vec3A::Z].into_iter().enumerate() {
-                rows.ang[i] = Row::angular(axis);
-                rows.ang_c[i] = c[i];
+                rows.ang.rows[i] = Row::angular(axis);
+                rows.ang.c[i] = c[i];
             }
-            rows.n_ang = 3;
+            rows.ang.n = 3;
         };
         match self.kind {
             JointKind::Fixed => {
-                weld(&mut rows);
-                point(&mut rows);
+                weld(rows);
+                point(rows);
             }
             JointKind::Revolute {
                 limits,
@@ -312,36 +402,42 @@ impl JointConstraint {
             } => {
                 // The free axis only where something acts on it (its angle costs an atan2).
                 if limits.is_some() || motor.is_some() || spring.is_some() {
-                    rows.axis = Some((Row::angular(ax), twist_angle(fa.inverse() * fb)));
+                    rows.axis = Some(Single::new(
+                        Row::angular(ax),
+                        twist_angle(fa.inverse() * fb),
+                    ));
                 }
                 let bx = Vec3A::from(fb * Vec3::X);
                 let c = ax.cross(bx);
                 for (i, t) in [fa * Vec3::Y, fa * Vec3::Z].into_iter().enumerate() {
                     let t = Vec3A::from(t);
-                    rows.ang[i] = Row::angular(t);
-                    rows.ang_c[i] = t.dot(c);
+                    rows.ang.rows[i] = Row::angular(t);
+                    rows.ang.c[i] = t.dot(c);
                 }
-                rows.n_ang = 2;
-                point(&mut rows);
+                rows.ang.n = 2;
+                point(rows);
             }
             JointKind::Prismatic { .. } => {
                 // The axis and its cross axes turn with A: their rows take the lever `ra + d`.
                 let lever = ra + d;
-                rows.axis = Some((Row::linear(ax, lever, rb), ax.dot(d)));
-                weld(&mut rows);
+                rows.axis = Some(Single::new(Row::linear(ax, lever, rb), ax.dot(d)));
+                weld(rows);
                 for (i, t) in [fa * Vec3::Y, fa * Vec3::Z].into_iter().enumerate() {
                     let t = Vec3A::from(t);
-                    rows.lin[i] = Row::linear(t, lever, rb);
-                    rows.lin_c[i] = t.dot(d);
+                    rows.lin.rows[i] = Row::linear(t, lever, rb);
+                    rows.lin.c[i] = t.dot(d);
                 }
-                rows.n_lin = 2;
+                rows.lin.n = 2;
             }
             JointKind::Spherical { cone, twist } => {
                 let bx = Vec3A::from(fb * Vec3::X);
                 if twist.is_some() {
                     let mid = (ax + bx).normalize_or_zero();
                     let twist_axis = if mid == Vec3A::ZERO { bx } else { mid };
-                    rows.axis = Some((Row::angular(twist_axis), twist_angle(fa.inverse() * fb)));
+                    rows.axis = Some(Single::new(
+                        Row::angular(twist_axis),
+                        twist_angle(fa.inverse() * fb),
+                    ));
                 }
                 if let Some(cone) = cone {
                     let n = ax.cross(bx);
@@ -349,74 +445,84 @@ impl JointConstraint {
                     if sin > 1e-6 {
                         let swing = ax.dot(bx).clamp(-1.0, 1.0).acos();
                         // d(swing)/dt = n̂·(w_b − w_a): the row is −n̂.
-                        rows.cone = Some((Row::angular(-n / sin), cone - swing));
+                        rows.cone = Some(Single::new(Row::angular(-n / sin), cone - swing));
                     }
                 }
-                point(&mut rows);
+                point(rows);
             }
             JointKind::Distance { min, max, .. } => {
                 let length = d.length();
                 if length > MIN_DISTANCE_JOINT_LENGTH {
                     let row = Row::linear(d / length, ra, rb);
                     if min == max {
-                        rows.lin[0] = row;
-                        rows.lin_c[0] = length - min;
-                        rows.n_lin = 1;
+                        rows.lin.rows[0] = row;
+                        rows.lin.c[0] = length - min;
+                        rows.lin.n = 1;
                     } else {
-                        rows.axis = Some((row, length));
+                        rows.axis = Some(Single::new(row, length));
                     }
                 }
             }
         }
-        self.weigh(&mut rows);
-        rows
+        self.weigh(rows);
     }
 
-    /// Fills each row's angular parts through the inverse inertias (`Row::ia`, `Row::ib`).
+    /// Fills each row's angular parts through the inverse inertias (`Row::ia`, `Row::ib`),
+    /// the single rows' masses and the blocks' factors: all fixed until the next build.
     fn weigh(&self, rows: &mut Rows) {
         let weigh = |r: &mut Row| {
             r.ia = self.inv_i_a * r.ang_a;
             r.ib = self.inv_i_b * r.ang_b;
         };
-        if let Some((r, _)) = rows.axis.as_mut() {
-            weigh(r);
+        for s in [rows.axis.as_mut(), rows.cone.as_mut()]
+            .into_iter()
+            .flatten()
+        {
+            weigh(&mut s.row);
+            s.mass = self.mass(&s.row);
         }
-        if let Some((r, _)) = rows.cone.as_mut() {
-            weigh(r);
+        for b in [&mut rows.lin, &mut rows.ang] {
+            b.rows[..b.n].iter_mut().for_each(weigh);
+            let mut k = [[0.0f32; 3]; 3];
+            let rows = &b.rows[..b.n];
+            for (i, ri) in rows.iter().enumerate() {
+                for (j, rj) in rows.iter().enumerate().skip(i) {
+                    let kij = self.k(ri, rj);
+                    k[i][j] = kij;
+                    k[j][i] = kij;
+                }
+            }
+            b.inv = block_inverse(&k, b.n);
         }
-        rows.lin[..rows.n_lin].iter_mut().for_each(weigh);
-        rows.ang[..rows.n_ang].iter_mut().for_each(weigh);
-    }
-
-    /// Builds the rows at the bodies' current poses for the passes that follow.
-    pub(crate) fn refresh(&mut self, bodies: &[SolverBody], states: &[BodyState]) {
-        self.rows = self.rows(bodies, states);
     }
 
     /// Applies last substep's impulses (Box2D v3 warm start), at the refreshed geometry.
-    pub(crate) fn warm_start(&self, states: &mut [BodyState]) {
-        let rows = &self.rows;
+    pub(crate) fn warm_start(&self, rows: &Rows, states: &mut [BodyState]) {
         let mut v = self.load(states);
         let im = &self.impulses;
-        if let Some((axis, _)) = rows.axis {
-            self.apply(&axis, im.spring + im.motor + im.lower - im.upper, &mut v);
+        if let Some(axis) = &rows.axis {
+            self.apply(
+                &axis.row,
+                im.spring + im.motor + im.lower - im.upper,
+                &mut v,
+            );
         }
-        if let Some((cone, _)) = rows.cone {
-            self.apply(&cone, im.cone, &mut v);
+        if let Some(cone) = &rows.cone {
+            self.apply(&cone.row, im.cone, &mut v);
         }
-        for i in 0..rows.n_ang {
-            self.apply(&rows.ang[i], im.angular[i], &mut v);
+        for i in 0..rows.ang.n {
+            self.apply(&rows.ang.rows[i], im.angular[i], &mut v);
         }
-        for i in 0..rows.n_lin {
-            self.apply(&rows.lin[i], im.linear[i], &mut v);
+        for i in 0..rows.lin.n {
+            self.apply(&rows.lin.rows[i], im.linear[i], &mut v);
         }
         self.store(states, &v);
     }
 
     /// One Gauss–Seidel pass over the joint's rows at the refreshed geometry: biased
     /// (`use_bias`, position error fed back softly) or relaxing (rigid, no bias).
-    pub(crate) fn solve(&mut self, states: &mut [BodyState], use_bias: bool) {
-        let rows = self.rows;
+    pub(crate) fn solve(&mut self, rows: &Rows, states: &mut [BodyState], use_bias: bool) {
+        let mut im = self.impulses;
         let mut v = self.load(states);
         let soft = if use_bias {
             Coeffs::from(self.softness)
@@ -446,7 +552,8 @@ impl JointConstraint {
             ),
             JointKind::Fixed => (None, None, None, false),
         };
-        if let Some((axis, x)) = rows.axis {
+        if let Some(axis) = &rows.axis {
+            let x = axis.x;
             let error = |target: f32| {
                 if angular {
                     angle_difference(x, target)
@@ -454,66 +561,46 @@ impl JointConstraint {
                     x - target
                 }
             };
+            let (row, mass) = (&axis.row, axis.mass);
             if let Some(s) = spring {
-                self.spring_row(&axis, error(s.rest), &mut v);
+                self.spring_row(row, mass, error(s.rest), &mut im.spring, &mut v);
             }
             if let Some(m) = motor {
-                self.motor_row(&axis, m, &error, &mut v);
+                self.motor_row(row, mass, m, &error, &mut im.motor, &mut v);
             }
             if let Some(l) = limits {
                 // A rope's lower bound of 0 never acts.
                 if !(matches!(self.kind, JointKind::Distance { .. }) && l.lower <= 0.0) {
-                    let mut lower = self.impulses.lower;
-                    self.limit_row(&axis, x - l.lower, &mut lower, soft, &mut v);
-                    self.impulses.lower = lower;
+                    self.limit_row(row, mass, x - l.lower, &mut im.lower, soft, &mut v);
                 }
-                let mut upper = self.impulses.upper;
-                self.limit_row(&axis.negated(), l.upper - x, &mut upper, soft, &mut v);
-                self.impulses.upper = upper;
+                let upper = row.negated();
+                self.limit_row(&upper, mass, l.upper - x, &mut im.upper, soft, &mut v);
             }
         }
-        if let Some((cone, c)) = rows.cone {
-            let mut acc = self.impulses.cone;
-            self.limit_row(&cone, c, &mut acc, soft, &mut v);
-            self.impulses.cone = acc;
+        if let Some(cone) = &rows.cone {
+            self.limit_row(&cone.row, cone.mass, cone.x, &mut im.cone, soft, &mut v);
         }
-        let mut ang = self.impulses.angular;
-        self.block(&rows.ang, rows.ang_c, rows.n_ang, &mut ang, soft, &mut v);
-        self.impulses.angular = ang;
-        let mut lin = self.impulses.linear;
-        self.block(&rows.lin, rows.lin_c, rows.n_lin, &mut lin, soft, &mut v);
-        self.impulses.linear = lin;
+        self.block(&rows.ang, &mut im.angular, soft, &mut v);
+        self.block(&rows.lin, &mut im.linear, soft, &mut v);
+        self.impulses = im;
         self.store(states, &v);
     }
 
-    /// A block of `n` equality rows with position errors `c`, solved together.
-    fn block(
-        &self,
-        rows: &[Row; 3],
-        c: [f32; 3],
-        n: usize,
-        acc: &mut [f32; 3],
-        soft: Coeffs,
-        v: &mut Velocities,
-    ) {
+    /// A block's equality rows, solved together with its factored `K`.
+    fn block(&self, b: &Block, acc: &mut [f32; 3], soft: Coeffs, v: &mut Velocities) {
+        let n = b.n;
         if n == 0 {
             return;
         }
-        let mut k = [[0.0f32; 3]; 3];
         let mut rhs = [0.0f32; 3];
-        for i in 0..n {
-            for j in i..n {
-                let kij = self.k(&rows[i], &rows[j]);
-                k[i][j] = kij;
-                k[j][i] = kij;
-            }
-            rhs[i] = self.cdot(&rows[i], v) + soft.bias_rate * c[i];
+        for ((rhs, r), c) in rhs.iter_mut().zip(&b.rows[..n]).zip(b.c) {
+            *rhs = self.cdot(r, v) + soft.bias_rate * c;
         }
-        let x = solve_block(&k, rhs, n);
+        let x = b.inv * Vec3A::from(rhs);
         for i in 0..n {
             let impulse = -soft.mass_scale * x[i] - soft.impulse_scale * acc[i];
             acc[i] += impulse;
-            self.apply(&rows[i], impulse, v);
+            self.apply(&b.rows[i], impulse, v);
         }
     }
 
@@ -526,27 +613,28 @@ impl JointConstraint {
         }
     }
 
-    /// A spring toward the rest coordinate (`error` = coordinate − rest), both passes.
-    fn spring_row(&mut self, r: &Row, error: f32, v: &mut Velocities) {
+    /// A spring toward the rest coordinate (`error` = coordinate − rest), both passes; `m`
+    /// is the row's mass and `acc` its accumulated impulse.
+    fn spring_row(&self, r: &Row, m: f32, error: f32, acc: &mut f32, v: &mut Velocities) {
         let s = Coeffs::from(self.spring_softness);
-        let m = self.mass(r);
-        let impulse = -m * s.mass_scale * (self.cdot(r, v) + s.bias_rate * error)
-            - s.impulse_scale * self.impulses.spring;
-        self.impulses.spring += impulse;
+        let impulse =
+            -m * s.mass_scale * (self.cdot(r, v) + s.bias_rate * error) - s.impulse_scale * *acc;
+        *acc += impulse;
         self.apply(r, impulse, v);
     }
 
     /// A motor toward a speed or a coordinate, its accumulated impulse bounded by its force.
     fn motor_row(
-        &mut self,
+        &self,
         r: &Row,
+        m: f32,
         motor: JointMotor,
         error: &dyn Fn(f32) -> f32,
+        acc_motor: &mut f32,
         v: &mut Velocities,
     ) {
-        let m = self.mass(r);
         let cdot = self.cdot(r, v);
-        let acc = self.impulses.motor;
+        let acc = *acc_motor;
         let impulse = match motor.target {
             MotorTarget::Velocity(speed) => -m * (cdot - speed),
             MotorTarget::Position { target, .. } => {
@@ -556,19 +644,18 @@ impl JointConstraint {
         };
         let bound = motor.max_force * self.h;
         let new = (acc + impulse).clamp(-bound, bound);
-        self.impulses.motor = new;
+        *acc_motor = new;
         self.apply(r, new - acc, v);
     }
 
     /// A one-sided row keeping `c ≥ 0`: speculative while `c > 0` (the gap may close by
-    /// exactly `c` this substep), soft (`soft`) once past it.
-    fn limit_row(&self, r: &Row, c: f32, acc: &mut f32, soft: Coeffs, v: &mut Velocities) {
+    /// exactly `c` this substep), soft (`soft`) once past it. `m` is the row's mass.
+    fn limit_row(&self, r: &Row, m: f32, c: f32, acc: &mut f32, soft: Coeffs, v: &mut Velocities) {
         let (bias, ms, is) = if c > 0.0 {
             (c * self.inv_h, 1.0, 0.0)
         } else {
             (soft.bias_rate * c, soft.mass_scale, soft.impulse_scale)
         };
-        let m = self.mass(r);
         let impulse = -m * ms * (self.cdot(r, v) + bias) - is * *acc;
         let new = (*acc + impulse).max(0.0);
         self.apply(r, new - *acc, v);
@@ -576,9 +663,9 @@ impl JointConstraint {
     }
 
     /// The force (N) and torque (N·m) on body B over the last substep, from the accumulated
-    /// impulses at the bodies' current poses.
-    pub(crate) fn reaction(&self, bodies: &[SolverBody], states: &[BodyState]) -> (Vec3, Vec3) {
-        let rows = self.rows(bodies, states);
+    /// impulses at `rows`, those of the last [`JointConstraint::refresh`] (the solver leaves
+    /// them at the bodies' final poses).
+    pub(crate) fn reaction(&self, rows: &Rows) -> (Vec3, Vec3) {
         let im = &self.impulses;
         let (mut force, mut torque) = (Vec3A::ZERO, Vec3A::ZERO);
         let mut add = |r: &Row, impulse: f32| {
@@ -587,17 +674,17 @@ impl JointConstraint {
                 torque += r.ang_b * impulse;
             }
         };
-        if let Some((axis, _)) = rows.axis {
-            add(&axis, im.spring + im.motor + im.lower - im.upper);
+        if let Some(axis) = &rows.axis {
+            add(&axis.row, im.spring + im.motor + im.lower - im.upper);
         }
-        if let Some((cone, _)) = rows.cone {
-            add(&cone, im.cone);
+        if let Some(cone) = &rows.cone {
+            add(&cone.row, im.cone);
         }
-        for i in 0..rows.n_ang {
-            add(&rows.ang[i], im.angular[i]);
+        for i in 0..rows.ang.n {
+            add(&rows.ang.rows[i], im.angular[i]);
         }
-        for i in 0..rows.n_lin {
-            add(&rows.lin[i], im.linear[i]);
+        for i in 0..rows.lin.n {
+            add(&rows.lin.rows[i], im.linear[i]);
         }
         (
             Vec3::from(force) * self.inv_h,
@@ -634,14 +721,44 @@ mod tests {
     fn blocks_solve_exactly_and_drop_rows_that_cannot_move() {
         let k = [[4.0, 1.0, 0.5], [1.0, 3.0, 0.25], [0.5, 0.25, 2.0]];
         let b = [1.0, -2.0, 0.5];
-        let x = solve_block(&k, b, 3);
+        let x = substitute(&factor(&k, 3), b, 3);
         for i in 0..3 {
             let r: f32 = (0..3).map(|j| k[i][j] * x[j]).sum();
             assert!((r - b[i]).abs() < 1e-5, "row {i}: {r} vs {}", b[i]);
         }
         // A row with no mass (locked) gets no impulse; the others are still solved.
         let k = [[2.0, 0.0, 0.0], [0.0, 0.0, 0.0], [0.0, 0.0, 4.0]];
-        assert_eq!(solve_block(&k, [2.0, 5.0, 2.0], 3), [1.0, 0.0, 0.5]);
+        assert_eq!(
+            substitute(&factor(&k, 3), [2.0, 5.0, 2.0], 3),
+            [1.0, 0.0, 0.5]
+        );
+    }
+
+    #[test]
+    fn block_inverses_match_the_factored_solve() {
+        let x_of = |k: &[[f32; 3]; 3], b: [f32; 3], n: usize| {
+            let x = block_inverse(k, n) * Vec3A::from(b);
+            [x.x, x.y, x.z]
+        };
+        // Full rank, 1 to 3 rows (the closed forms), and rows that cannot move (the factors).
+        let full = [[4.0, 1.0, 0.5], [1.0, 3.0, 0.25], [0.5, 0.25, 2.0]];
+        let locked = [[2.0, 0.0, 0.0], [0.0, 0.0, 0.0], [0.0, 0.0, 4.0]];
+        let singular = [[1.0, 1.0, 0.0], [1.0, 1.0, 0.0], [0.0, 0.0, 3.0]];
+        let b = [1.0, -2.0, 0.5];
+        for k in [full, locked, singular] {
+            for n in 1..=3 {
+                let want = substitute(&factor(&k, n), b, n);
+                let got = x_of(&k, b, n);
+                for i in 0..3 {
+                    assert!(
+                        (got[i] - want[i]).abs() <= 1e-5 * want[i].abs().max(1.0),
+                        "n {n}, row {i}: {got:?} vs {want:?} for {k:?}"
+                    );
+                }
+            }
+        }
+        assert_eq!(x_of(&locked, [2.0, 5.0, 2.0], 3), [1.0, 0.0, 0.5]);
+        assert_eq!(block_inverse(&full, 0), Mat3A::ZERO);
     }
 
     #[test]

@@ -7,7 +7,7 @@ use super::batching::ContactBatches;
 use super::body_state::BodyState;
 use super::contact_batch::Pass;
 use super::free_rotation::free_rotation_step;
-use super::joint_constraint::JointConstraint;
+use super::joint_constraint::{JointConstraint, Rows};
 use super::solver_body::{SolverBody, CAPPED_ANGULAR, CAPPED_LINEAR};
 use crate::pose::unit_rotation;
 
@@ -35,12 +35,14 @@ pub(crate) struct SolveParams {
 
 /// Runs all substeps over awake bodies, their joints and their contact batches (joints
 /// before contacts in each pass, as Box2D v3 orders them). Returns how many free-rotation
-/// solves missed their tolerance (see [`free_rotation_step`]).
+/// solves missed their tolerance (see [`free_rotation_step`]). `rows` holds each joint's rows,
+/// parallel to `joints` (its length is theirs).
 pub(crate) fn solve_substeps(
     bodies: &mut [SolverBody],
     states: &mut [BodyState],
     batches: &mut ContactBatches,
     joints: &mut [JointConstraint],
+    rows: &mut [Rows],
     p: &SolveParams,
 ) -> u32 {
     let mut not_converged = 0;
@@ -55,28 +57,32 @@ pub(crate) fn solve_substeps(
         use_bias: false,
         ..solve_pass
     };
+    // Joint rows are built once per pose: here, and after each substep moves the bodies
+    // (the relax passes and the next substep's warm start and biased passes all see those
+    // poses; building again at each substep's start cost a third of the bridge's joints).
+    debug_assert_eq!(joints.len(), rows.len());
+    for (j, r) in joints.iter().zip(rows.iter_mut()) {
+        j.refresh(bodies, states, r);
+    }
     for _ in 0..substeps {
         integrate_velocities(bodies, states, h);
-        for j in joints.iter_mut() {
-            j.refresh(bodies, states);
-            j.warm_start(states);
+        for (j, r) in joints.iter().zip(rows.iter()) {
+            j.warm_start(r, states);
         }
         batches.warm_start(states);
         for _ in 0..p.iterations.max(1) {
-            for j in joints.iter_mut() {
-                j.solve(states, true);
+            for (j, r) in joints.iter_mut().zip(rows.iter()) {
+                j.solve(r, states, true);
             }
             batches.solve(states, solve_pass);
         }
         not_converged += integrate_positions(bodies, states, h, p);
-        if p.relax_iterations > 0 {
-            for j in joints.iter_mut() {
-                j.refresh(bodies, states);
-            }
+        for (j, r) in joints.iter().zip(rows.iter_mut()) {
+            j.refresh(bodies, states, r);
         }
         for _ in 0..p.relax_iterations {
-            for j in joints.iter_mut() {
-                j.solve(states, false);
+            for (j, r) in joints.iter_mut().zip(rows.iter()) {
+                j.solve(r, states, false);
             }
             batches.solve(states, relax_pass);
         }
