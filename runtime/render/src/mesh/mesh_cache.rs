@@ -25,16 +25,12 @@ impl MeshCache {
         data: &MeshData,
         label: &str,
     ) -> MeshHandle {
-        let handle = MeshHandle(self.meshes.len() as u32);
-        let upload = if data.has_tangents() {
-            GpuMesh::upload(device, storage_layout, data, label)
-        } else {
-            let mut with_tangents = data.clone();
-            with_tangents.generate_tangents();
-            GpuMesh::upload(device, storage_layout, &with_tangents, label)
-        };
-        self.meshes.push(Some(upload));
-        handle
+        if data.has_tangents() {
+            return self.add_as_is(device, storage_layout, data, label);
+        }
+        let mut with_tangents = data.clone();
+        with_tangents.generate_tangents();
+        self.add_as_is(device, storage_layout, &with_tangents, label)
     }
 
     /// Uploads a valid mesh as it is (without tangents, if it has none).
