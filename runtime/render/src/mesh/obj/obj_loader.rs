@@ -32,7 +32,11 @@ pub(crate) fn load_obj_source(
         })?;
     let mut warnings = Vec::new();
     let text = read_text(&bytes, path, &mut warnings);
+    // The file's bytes and its text are each as large as the file: neither is needed once
+    // the next stage has them (a 2M-triangle file held both through the whole build).
+    drop(bytes);
     let mut doc = parse_obj(&text, path)?;
+    drop(text);
     warnings.append(&mut doc.warnings);
     let folder = path.parent().unwrap_or(Path::new(""));
 
