@@ -13,6 +13,9 @@
 //! optimised: `cargo --config 'profile.dev.package.onyx-render.opt-level=3' bench --profile
 //! dev -p onyx-render --bench import`.
 
+#[path = "../tests/common/lavapipe_env.rs"]
+mod lavapipe_env;
+
 use std::alloc::{GlobalAlloc, Layout, System};
 use std::path::{Path, PathBuf};
 use std::sync::atomic::{AtomicUsize, Ordering};
@@ -174,26 +177,10 @@ fn mib(bytes: usize) -> f64 {
     bytes as f64 / (1024.0 * 1024.0)
 }
 
-fn setup_env() {
-    for (key, value) in [
-        ("WGPU_BACKEND", "vulkan"),
-        ("WGPU_ADAPTER_NAME", "llvmpipe"),
-    ] {
-        if std::env::var_os(key).is_none() {
-            std::env::set_var(key, value);
-        }
-    }
-    if std::env::var_os("XDG_RUNTIME_DIR").is_none() {
-        let dir = std::env::temp_dir().join("onyx-render-xdg");
-        let _ = std::fs::create_dir_all(&dir);
-        std::env::set_var("XDG_RUNTIME_DIR", dir);
-    }
-}
-
 fn main() {
     // `cargo bench` passes `--bench`; any other argument is a filter, as criterion's are.
     let filter: Option<String> = std::env::args().skip(1).find(|a| !a.starts_with("--"));
-    setup_env();
+    lavapipe_env::pin_lavapipe();
     let renderer = Renderer::new_headless(RenderSettings::deterministic());
     let max_side = renderer.as_ref().map_or(8192, Renderer::max_texture_side);
     let samples = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../../../shared/fixtures/gltf");

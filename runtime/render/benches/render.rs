@@ -16,6 +16,9 @@
 //! The camera looks down on the grid from above; shadows are set to cover the whole grid. A
 //! cascade that holds no cube draws nothing, so "shadow draws" can be fewer than cascades.
 
+#[path = "../tests/common/lavapipe_env.rs"]
+mod lavapipe_env;
+
 use std::time::{Duration, Instant};
 
 use criterion::{BenchmarkId, Criterion};
@@ -29,22 +32,6 @@ const SIZE: u32 = 512;
 const COUNTS: [usize; 3] = [1_000, 10_000, 100_000];
 /// Frames drawn before each measurement.
 const WARM_UP_FRAMES: u32 = 2;
-
-fn setup_env() {
-    for (key, value) in [
-        ("WGPU_BACKEND", "vulkan"),
-        ("WGPU_ADAPTER_NAME", "llvmpipe"),
-    ] {
-        if std::env::var_os(key).is_none() {
-            std::env::set_var(key, value);
-        }
-    }
-    if std::env::var_os("XDG_RUNTIME_DIR").is_none() {
-        let dir = std::env::temp_dir().join("onyx-render-xdg");
-        let _ = std::fs::create_dir_all(&dir);
-        std::env::set_var("XDG_RUNTIME_DIR", dir);
-    }
-}
 
 /// `count` unit cubes on a square grid, two materials, all in view of [`camera`].
 fn cubes(renderer: &Renderer, count: usize) -> Vec<DrawObject> {
@@ -249,7 +236,7 @@ fn table() {
 }
 
 fn main() {
-    setup_env();
+    lavapipe_env::pin_lavapipe();
     let mut criterion = Criterion::default().configure_from_args();
     criterion_frames(&mut criterion);
     criterion.final_summary();

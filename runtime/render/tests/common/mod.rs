@@ -3,6 +3,8 @@
 
 #![allow(dead_code)] // each test binary uses a different subset
 
+mod lavapipe_env;
+
 use std::path::PathBuf;
 use std::sync::Once;
 
@@ -19,20 +21,7 @@ pub const MAX_DIFF_SHARE: f64 = 0.005;
 pub fn setup() {
     static ONCE: Once = Once::new();
     ONCE.call_once(|| {
-        let defaults = [
-            ("WGPU_BACKEND", "vulkan"),
-            ("WGPU_ADAPTER_NAME", "llvmpipe"),
-        ];
-        for (key, value) in defaults {
-            if std::env::var_os(key).is_none() {
-                std::env::set_var(key, value);
-            }
-        }
-        if std::env::var_os("XDG_RUNTIME_DIR").is_none() {
-            let dir = std::env::temp_dir().join("onyx-render-xdg");
-            let _ = std::fs::create_dir_all(&dir);
-            std::env::set_var("XDG_RUNTIME_DIR", dir);
-        }
+        lavapipe_env::pin_lavapipe();
         let _ = tracing_subscriber::fmt()
             .with_env_filter(tracing_subscriber::EnvFilter::from_default_env())
             .with_test_writer()
