@@ -28,6 +28,21 @@ pub fn target_dir() -> PathBuf {
     }
 }
 
+/// The Khronos glTF samples in `../shared/fixtures/gltf/` beside the checkout, or `None`,
+/// saying so, when they are absent (the test then skips).
+pub fn gltf_samples() -> Option<PathBuf> {
+    let dir = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../../shared/fixtures/gltf");
+    if dir.is_dir() {
+        Some(dir)
+    } else {
+        eprintln!(
+            "skipped: {} is absent (../shared/fixtures not beside the checkout)",
+            dir.display()
+        );
+        None
+    }
+}
+
 /// The built library of workspace crate `crate_name` (`hello`, `fixture-faulty`, …).
 ///
 /// Panics with the command to run when it has not been built.

@@ -5,20 +5,7 @@
 use std::path::{Path, PathBuf};
 use std::process::Command;
 
-use onyx_tests::{onyx_binary, target_dir};
-
-fn samples() -> Option<PathBuf> {
-    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../shared/fixtures/gltf");
-    if dir.is_dir() {
-        Some(dir)
-    } else {
-        eprintln!(
-            "skipped: {} is absent (../shared/fixtures not beside the checkout)",
-            dir.display()
-        );
-        None
-    }
-}
+use onyx_tests::{gltf_samples, onyx_binary, target_dir};
 
 /// One file per sample: its binary variant, else its glTF one, else any; plus loose files.
 fn one_file_per_sample(dir: &Path) -> Vec<PathBuf> {
@@ -48,7 +35,7 @@ fn one_file_per_sample(dir: &Path) -> Vec<PathBuf> {
 
 #[test]
 fn every_sample_opens_as_a_scene_and_screenshots_without_a_crash() {
-    let Some(dir) = samples() else { return };
+    let Some(dir) = gltf_samples() else { return };
     let files = one_file_per_sample(&dir);
     assert!(files.len() >= 28, "found only {} samples", files.len());
     let out_dir = tempfile::tempdir().unwrap();
@@ -97,7 +84,7 @@ fn every_sample_opens_as_a_scene_and_screenshots_without_a_crash() {
 
 #[test]
 fn a_box_opened_as_a_scene_is_framed_by_the_default_camera() {
-    let Some(dir) = samples() else { return };
+    let Some(dir) = gltf_samples() else { return };
     let out_dir = tempfile::tempdir().unwrap();
     let png = out_dir.path().join("box.png");
     let out = Command::new(onyx_binary())

@@ -598,11 +598,9 @@ fn import_obj_makes_an_entity_showing_the_model() {
 
 #[test]
 fn import_gltf_brings_the_node_tree_under_one_new_entity_and_undoes_in_one_step() {
-    let samples = repo_file("../shared/fixtures/gltf");
-    if !samples.is_dir() {
-        eprintln!("skipped: {} is absent", samples.display());
+    let Some(samples) = onyx_tests::gltf_samples() else {
         return;
-    }
+    };
     let dir = tempfile::tempdir().unwrap();
     let mut host = editor_host(dir.path());
     let before = host.world().len();
