@@ -2,7 +2,9 @@
 mod common;
 use common::*;
 use onyx_physics::glam::Vec3;
-use onyx_physics::{BodyHandle, ColliderDesc, PhysicsWorld, RigidBodyDesc};
+use onyx_physics::{
+    BodyHandle, ColliderDesc, PhysicsPreset, PhysicsSettings, PhysicsWorld, RigidBodyDesc,
+};
 
 fn drift(w: &PhysicsWorld, b: BodyHandle, p0: Vec3) -> f32 {
     (w.body(b).unwrap().translation() - p0).length()
@@ -108,38 +110,163 @@ fn five_box_stack_at_1e5_m_offset_rests_like_at_origin() {
     );
 }
 
-/// A frictionless stack with its middle box 10 cm off centre is in equilibrium (every box's
-/// weight is over its support) and must stay so: nothing but the contact normals acts
-/// sideways, so a normal that follows the few-µm tilt of a loaded compliant contact would
-/// push the boxes downhill and apart (they used to slide off each other within ~50 s).
+/// Boxes (centre, half extents) stacked with every box resting on the one below, offset in x
+/// and z so that what stands on each face has its centre of mass over the face, at least
+/// `margin` metres inside its edge: a stack in equilibrium however far off centre its loads.
+fn random_stack(rng: &mut Rng, count: usize, margin: f32) -> Vec<(Vec3, Vec3)> {
+    'retry: loop {
+        let mut boxes: Vec<(Vec3, Vec3)> = Vec::new();
+        let mut y = 0.0;
+        for i in 0..count {
+            let half = Vec3::new(
+                rng.range(0.35, 0.6),
+                rng.range(0.3, 0.5),
+                rng.range(0.35, 0.6),
+            );
+            let x = if i == 0 {
+                0.0
+            } else {
+                boxes[i - 1].0.x + rng.range(-0.3, 0.3)
+            };
+            let z = if i == 0 {
+                0.0
+            } else {
+                boxes[i - 1].0.z + rng.range(-0.3, 0.3)
+            };
+            boxes.push((Vec3::new(x, y + half.y, z), half));
+            y += 2.0 * half.y;
+        }
+        // Each face between box i and i + 1 carries boxes i + 1.. (mass ∝ volume).
+        for i in 0..count - 1 {
+            let (mut m, mut c) = (0.0, Vec3::ZERO);
+            for &(p, h) in &boxes[i + 1..] {
+                let v = h.x * h.y * h.z;
+                m += v;
+                c += p * v;
+            }
+            let c = c / m;
+            let (lo, hi) = (boxes[i], boxes[i + 1]);
+            for axis in [0, 2] {
+                let min = (lo.0[axis] - lo.1[axis]).max(hi.0[axis] - hi.1[axis]);
+                let max = (lo.0[axis] + lo.1[axis]).min(hi.0[axis] + hi.1[axis]);
+                if c[axis] < min + margin || c[axis] > max - margin {
+                    continue 'retry;
+                }
+            }
+        }
+        return boxes;
+    }
+}
+
+/// Runs `stack` for 20 s at `preset` with every surface at `friction`, on a half-space or a
+/// ground box. Returns each box's sideways and vertical displacement, metres.
+fn settle(
+    preset: PhysicsPreset,
+    stack: &[(Vec3, Vec3)],
+    ground_box: bool,
+    friction: f32,
+) -> Vec<(f32, f32)> {
+    let mut w = PhysicsWorld::new(PhysicsSettings {
+        sleep_enabled: false,
+        ..preset.settings()
+    });
+    let g = w.insert_body(RigidBodyDesc::fixed());
+    let ground = if ground_box {
+        ColliderDesc::cuboid(10.0, 0.5, 10.0).translation(Vec3::Y * -0.5)
+    } else {
+        ColliderDesc::half_space(Vec3::Y)
+    };
+    w.insert_collider(ground.friction(friction), g);
+    let boxes: Vec<_> = stack
+        .iter()
+        .map(|&(p, h)| {
+            let b = w.insert_body(RigidBodyDesc::dynamic().translation(p));
+            w.insert_collider(ColliderDesc::cuboid(h.x, h.y, h.z).friction(friction), b);
+            (b, p)
+        })
+        .collect();
+    let steps = (20.0 / w.settings().dt) as usize;
+    run(&mut w, steps);
+    boxes
+        .iter()
+        .map(|&(b, p0)| {
+            let p = w.body(b).unwrap().translation();
+            (Vec3::new(p.x - p0.x, 0.0, p.z - p0.z).length(), p.y - p0.y)
+        })
+        .collect()
+}
+
+/// Frictionless stacks are in equilibrium and must stay so at every preset: nothing but the
+/// contact normals acts sideways, so a face that tilts under its off-centre load, or a normal
+/// that follows the tilt, pushes the boxes downhill and apart. A 3-box stack with its middle
+/// box 10 cm off centre slid 17.8 m apart in 20 s at fast before faces were levelled. The
+/// issue's two stacks (3 boxes, the middle 10 cm off; a centred column of 5) at every
+/// preset, and ten random ones (3–5 boxes of mixed sizes, 0.6–1.2 m, offset in x and z,
+/// each load's centre at least 10 cm inside its face) wherever the same stack with friction
+/// 0.5 stands (no box 10 cm off or 5 cm down): friction must not be what holds a stack up. (`fast` topples
+/// some of the random stacks with friction too: the soft contacts of 30 Hz × 2 let a box
+/// under an off-centre load tip a few milliradians while the stack settles.) On a
+/// half-space and on a ground box.
 #[test]
-fn frictionless_offset_stack_holds_still_for_4000_steps() {
-    let (mut w, _) = world_with_ground(0.0);
-    w.settings_mut().sleep_enabled = false;
-    let h = 0.5;
-    let mut boxes = Vec::new();
-    for i in 0..3 {
-        let x = if i == 1 { 0.1 } else { 0.0 };
-        let p = Vec3::new(x, h + 2.0 * h * i as f32, 0.0);
-        let b = w.insert_body(RigidBodyDesc::dynamic().translation(p));
-        w.insert_collider(ColliderDesc::cuboid(h, h, h).friction(0.0), b);
-        boxes.push((b, p));
+fn frictionless_stacks_hold_still_at_every_preset() {
+    let cube = Vec3::splat(0.5);
+    let issue: Vec<Vec<(Vec3, Vec3)>> = vec![
+        [0.0, 0.1, 0.0]
+            .iter()
+            .enumerate()
+            .map(|(i, &x)| (Vec3::new(x, 0.5 + i as f32, 0.0), cube))
+            .collect(),
+        (0..5)
+            .map(|i| (Vec3::new(0.0, 0.5 + i as f32, 0.0), cube))
+            .collect(),
+    ];
+    let mut rng = Rng(15);
+    let random: Vec<_> = (0..10)
+        .map(|k| random_stack(&mut rng, 3 + k % 3, 0.1))
+        .collect();
+    let mut failures = Vec::new();
+    let mut checked = 0;
+    for preset in PhysicsPreset::ALL {
+        for ground_box in [false, true] {
+            let stacks = issue
+                .iter()
+                .map(|s| (s, true))
+                .chain(random.iter().map(|s| (s, false)));
+            for (n, (stack, always)) in stacks.enumerate() {
+                if !always
+                    && settle(preset, stack, ground_box, 0.5)
+                        .iter()
+                        .any(|&(side, dy)| side > 0.1 || dy.abs() > 0.05)
+                {
+                    println!("{preset}, stack {n}, ground box {ground_box}: topples with friction");
+                    continue;
+                }
+                checked += 1;
+                for (i, (sideways, dy)) in settle(preset, stack, ground_box, 0.0)
+                    .into_iter()
+                    .enumerate()
+                {
+                    // Each contact below gives a few millimetres (`fast` is softer).
+                    let per_contact = if preset == PhysicsPreset::Fast {
+                        0.01
+                    } else {
+                        0.005
+                    };
+                    let sag = per_contact * (i + 1) as f32;
+                    if sideways >= 1e-3 || dy.abs() >= sag {
+                        failures.push(format!(
+                            "{preset}, stack {n} {stack:?}, ground box {ground_box}: box {i} \
+                             moved {sideways} m sideways and {dy} m up in 20 s, expected < 1 mm \
+                             and within {sag} m"
+                        ));
+                    }
+                }
+            }
+        }
     }
-    run(&mut w, 4000);
-    for (i, &(b, p0)) in boxes.iter().enumerate() {
-        let p = w.body(b).unwrap().translation();
-        let sideways = Vec3::new(p.x - p0.x, 0.0, p.z - p0.z).length();
-        assert!(
-            sideways < 1e-3,
-            "box {i} moved {sideways} m sideways over 4000 frictionless steps, expected < 1 mm"
-        );
-        assert!(
-            (p.y - p0.y).abs() < 0.01,
-            "box {i} height {} (start {})",
-            p.y,
-            p0.y
-        );
-    }
+    println!("{checked} frictionless stacks checked");
+    assert!(checked >= 40, "only {checked} stacks checked");
+    assert!(failures.is_empty(), "{}", failures.join("\n"));
 }
 
 #[test]

@@ -52,6 +52,15 @@ pub const MANIFOLD_REUSE_MAX_DISTANCE: f32 = 0.001;
 /// radians.
 pub const MANIFOLD_REUSE_MAX_ANGLE: f32 = 0.005;
 
+/// A regenerated face manifold (two points or more) of a frictionless pair keeps its previous
+/// normal while the new one is within this angle of it, radians. Without friction nothing but the normal acts
+/// sideways: a stack settling from an exact start tilts by a few 1e-4 rad for a step or two
+/// before its faces level (see `FaceContact::level_patch`), a normal regenerated in that
+/// tilt pushed the boxes apart at 0.7 mm/s, and nothing frictionless ever stops them. The
+/// same bound as [`MANIFOLD_REUSE_MAX_ANGLE`]: a face that really turns gets its normal
+/// back once it has turned that far.
+pub const FRICTIONLESS_NORMAL_HOLD_ANGLE: f32 = 0.05;
+
 /// All contact pairs of the world.
 #[derive(Debug, Default)]
 pub struct NarrowPhase {
@@ -237,6 +246,7 @@ impl NarrowPhase {
         awake: &[NarrowBody],
     ) {
         let reuse_cos_half = (0.5 * MANIFOLD_REUSE_MAX_ANGLE).cos();
+        let hold_cos = FRICTIONLESS_NORMAL_HOLD_ANGLE.cos();
         self.updated_pairs.clear();
         let mut i = 0;
         while i < self.pairs.len() {
@@ -327,7 +337,12 @@ impl NarrowPhase {
                 continue;
             }
             let rel = (inv_a * d_ab, inv_a * rot_b);
-            if let Some(g) = pair.generated_at {
+            // A ball's or capsule's contact is not a point fixed on it: kept on the body, it
+            // would turn with the rolling body, off the line through the centre, and the normal
+            // force on it would turn the body further (a 1 mm ball on a box rolled off it).
+            let curved = |s: &Shape| matches!(s, Shape::Sphere(_) | Shape::Capsule(_));
+            let reusable = !curved(&ca.shape) && !curved(&cb.shape);
+            if let Some(g) = pair.generated_at.filter(|_| reusable) {
                 let size = ca
                     .aabb
                     .half_extents()
@@ -399,9 +414,17 @@ impl NarrowPhase {
             pair.manifolds
                 .resize_with(self.raw.len(), ContactManifold::default);
             let mut min_sep = f32::MAX;
+            // A frictionless face keeps its normal through a small turn (see
+            // `FRICTIONLESS_NORMAL_HOLD_ANGLE`).
+            let frictionless =
+                pair.static_friction.max(pair.dynamic_friction) < crate::solver::LEVEL_MAX_FRICTION;
             for (m, rm) in pair.manifolds.iter_mut().zip(&self.raw) {
-                m.normal = rm.normal;
-                m.tangent1 = rm.normal.any_orthonormal_vector();
+                let hold =
+                    frictionless && rm.points.len() > 1 && m.normal.dot(rm.normal) > hold_cos;
+                if !hold {
+                    m.normal = rm.normal;
+                }
+                m.tangent1 = m.normal.any_orthonormal_vector();
                 m.points.clear();
                 for rp in &rm.points {
                     let mut cp = frame.point(rp.point, rp.separation, rp.id);

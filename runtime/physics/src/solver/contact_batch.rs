@@ -150,6 +150,32 @@ pub(crate) struct NormalRows<const N: usize> {
     pub use_bias: bool,
 }
 
+/// Faces with a friction coefficient below this are levelled (see
+/// `FaceContact::level_patch`): friction holds a body on a face tilted by the micro-radians a
+/// soft contact tilts under an off-centre load.
+pub const LEVEL_MAX_FRICTION: f32 = 1e-3;
+
+/// The lanes whose face [`ManifoldRows::level_patch`] levelled: their points' rows leak the
+/// patch's mean impulse instead of their own.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Leveled {
+    /// Lane mask.
+    pub lanes: F,
+    /// Mean accumulated normal impulse of the patch's points.
+    pub mean_impulse: F,
+    /// 1 / points per lane.
+    pub inv_count: F,
+}
+
+impl Leveled {
+    /// No lane levelled.
+    pub const NONE: Self = Self {
+        lanes: F::ZERO,
+        mean_impulse: F::ZERO,
+        inv_count: F::ZERO,
+    };
+}
+
 /// What a manifold layout adds to the rows every manifold has.
 pub(crate) trait ManifoldRows: Copy + std::fmt::Debug {
     /// Four empty lanes.
@@ -166,6 +192,14 @@ pub(crate) trait ManifoldRows: Copy + std::fmt::Debug {
         vn: &mut [F; N],
         applied: &mut [F; N],
     );
+    /// After the shared step, before the per-point sweep: which of `lanes` hold a resting
+    /// face whose points leak their mean impulse (see `FaceContact::level_patch`).
+    fn level_patch<const N: usize>(
+        &self,
+        points: &[PointLanes; N],
+        lanes: F,
+        rows: &NormalRows<N>,
+    ) -> Leveled;
     /// After point `j` took `imp`: how the later points' normal velocities change.
     fn couple<const N: usize>(&self, j: usize, imp: F, vn: &mut [F; N]);
     /// Friction about the normal, after the friction in the plane.
@@ -199,6 +233,10 @@ impl ManifoldRows for PointContact {
         _: &mut [F; N],
         _: &mut [F; N],
     ) {
+    }
+    #[inline(always)]
+    fn level_patch<const N: usize>(&self, _: &[PointLanes; N], _: F, _: &NormalRows<N>) -> Leveled {
+        Leveled::NONE
     }
     #[inline(always)]
     fn couple<const N: usize>(&self, _: usize, _: F, _: &mut [F; N]) {}
@@ -510,12 +548,18 @@ impl<const N: usize, M: ManifoldRows, L: Levers<N>> ContactBatch<N, M, L> {
         let mut applied = [zero; N];
         self.manifold
             .solve_shared(&mut self.points, &rows, &mut vn, &mut applied);
+        let frictionless = self.friction.simd_lt(F::splat(LEVEL_MAX_FRICTION));
+        let mut leveled = self.manifold.level_patch(&self.points, frictionless, &rows);
         for j in 0..N {
             let cp = &mut self.points[j];
-            let imp = -cp.normal_mass * mass_scale[j] * (vn[j] + rows.bias[j])
-                - impulse_scale[j] * cp.normal_impulse;
+            let leak = leveled
+                .lanes
+                .select(leveled.mean_impulse, cp.normal_impulse);
+            let imp =
+                -cp.normal_mass * mass_scale[j] * (vn[j] + rows.bias[j]) - impulse_scale[j] * leak;
             let new = fmax(zero, cp.normal_impulse + imp);
             let imp = new - cp.normal_impulse;
+            leveled.mean_impulse += imp * leveled.inv_count;
             cp.normal_impulse = new;
             cp.max_normal_impulse = fmax(cp.max_normal_impulse, imp);
             applied[j] += imp;

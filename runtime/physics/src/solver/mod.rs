@@ -14,4 +14,5 @@ pub mod softness;
 pub(crate) mod solve;
 pub(crate) mod solver_body;
 
+pub(crate) use contact_batch::LEVEL_MAX_FRICTION;
 pub use softness::Softness;
