@@ -177,9 +177,65 @@ fn elastic_spheres_in_a_closed_box_keep_their_energy() {
     }
 }
 
+/// A column of elastic balls on an elastic floor, the lowest resting on it, the others
+/// dropped from 50 cm gaps: colliding in one step with a ball that has just left the floor,
+/// a ball must not be thrown up as if that ball had hit the floor again (a column of two
+/// gained 45 % of its energy at fast and at precise). Energy may be lost in simultaneous
+/// impacts (see the ignored test below); it may never be gained.
+#[test]
+fn a_column_of_elastic_balls_never_gains_energy() {
+    for preset in PhysicsPreset::ALL {
+        for n in 2..=4 {
+            let s = settings(preset, 0.0);
+            let mut w = PhysicsWorld::new(s);
+            let floor = w.insert_body(RigidBodyDesc::fixed());
+            w.insert_collider(
+                ColliderDesc::half_space(Vec3::Y)
+                    .restitution(1.0)
+                    .friction(0.0),
+                floor,
+            );
+            let r = 0.15;
+            let balls: Vec<_> = (0..n)
+                .map(|i| {
+                    let y = r + i as f32 * (2.0 * r + 0.5);
+                    let b = w.insert_body(RigidBodyDesc::dynamic().translation(Vec3::Y * y));
+                    w.insert_collider(ColliderDesc::sphere(r).restitution(1.0).friction(0.0), b);
+                    b
+                })
+                .collect();
+            let energy = |w: &PhysicsWorld| -> f32 {
+                balls
+                    .iter()
+                    .map(|&b| {
+                        let body = w.body(b).unwrap();
+                        let m = body.mass();
+                        0.5 * m * body.linvel().length_squared()
+                            + m * G * (body.translation().y - r)
+                    })
+                    .sum()
+            };
+            let e0 = energy(&w);
+            let mut most = 0.0f32;
+            for _ in 0..(20.0 / s.dt) as usize {
+                w.step();
+                most = most.max(energy(&w) / e0);
+            }
+            println!("{preset}, {n} balls: energy at most {most:.3} of the start");
+            assert!(
+                most < 1.02,
+                "{preset}: a column of {n} elastic balls reached {most} of its energy, \
+                 expected ≤ 1 (+ 2 %)"
+            );
+        }
+    }
+}
+
 /// Known to fail (see the report): at `fast` (10 cm of motion per step for 15 cm balls) and
 /// under gravity, where balls on the floor hit two others in one step, the simultaneous
-/// restitution gains or loses 5-80 % per 10,000 steps.
+/// restitution loses 5-65 % per 10,000 steps (fast without gravity 11 %, balanced 21 % and
+/// fast 64 % under gravity; it gained up to 136 % at fast before impacts were limited to the
+/// step they happen in).
 #[test]
 #[ignore = "known failure: simultaneous elastic impacts at fast or under gravity"]
 fn elastic_spheres_in_a_closed_box_keep_their_energy_under_gravity_and_at_fast() {

@@ -297,6 +297,7 @@ impl PhysicsWorld {
                         cp.base_separation,
                         accel,
                         h,
+                        s.dt,
                         pair.restitution,
                         s.restitution_threshold,
                     )

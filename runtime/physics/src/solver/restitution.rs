@@ -25,16 +25,23 @@
 /// Rebound speed, m/s, that restitution `e` gives a point whose relative normal velocity was
 /// `v0` (m/s, negative approaching) at step start, at separation `s0` (m), under relative
 /// normal acceleration `accel` (m/s², negative pulling the bodies together) with substeps of
-/// `h` seconds: `e` times the approach speed at impact (instantaneous, at the surface).
-/// `None` if the impact is no faster than `threshold` (m/s), or than the speed one substep
-/// of `accel` gives (how a resting contact looks to the integrator: support, not an impact),
-/// or the bodies do not close. `e <= 0` never bounces.
+/// `h` seconds in a step of `dt`: `e` times the approach speed at impact (instantaneous, at
+/// the surface). `None` if the impact is no faster than `threshold` (m/s), or than the speed
+/// one substep of `accel` gives (how a resting contact looks to the integrator: support, not
+/// an impact), or the bodies do not close within the step. `e <= 0` never bounces.
+///
+/// Separating bodies that `accel` pulls back together meet again only after
+/// `(u + √(u² − 2·accel·s₀)) / −accel`: a ball that has just left the floor does not hit it
+/// again in this step, whatever else pushes it there (a second ball landing on it: counted
+/// as a floor impact, its rebound target threw the upper ball up at 3.9 m/s instead of 1.2
+/// and a column of two elastic balls gained 45 % of its energy at 30 Hz).
 #[must_use]
 pub fn bounce_velocity(
     v0: f32,
     s0: f32,
     accel: f32,
     h: f32,
+    dt: f32,
     e: f32,
     threshold: f32,
 ) -> Option<f32> {
@@ -44,8 +51,8 @@ pub fn bounce_velocity(
     let u = v0 + 0.5 * accel * h;
     let impact = if s0 > 0.0 {
         let q = u * u - 2.0 * accel * s0;
-        // Closing now, or pulled together later.
-        if q <= 0.0 || (u >= 0.0 && accel >= 0.0) {
+        // Closing now, or pulled together within the step.
+        if q <= 0.0 || (u >= 0.0 && (accel >= 0.0 || (u + q.sqrt()) > -accel * dt)) {
             return None;
         }
         q.sqrt()
@@ -76,7 +83,7 @@ mod tests {
         let v0 = -3.0;
         let u = v0 - 0.5 * g * h;
         let expected = (u * u + 2.0 * g * 0.05).sqrt();
-        let v = bounce_velocity(v0, 0.05, -g, h, 1.0, 0.0).expect("it bounces");
+        let v = bounce_velocity(v0, 0.05, -g, h, 4.0 * h, 1.0, 0.0).expect("it bounces");
         assert!(
             (v - expected).abs() < 1e-5,
             "rebound {v}, expected {expected}"
@@ -98,9 +105,27 @@ mod tests {
 
     #[test]
     fn slow_impacts_under_the_threshold_do_not_bounce() {
-        assert_eq!(bounce_velocity(-0.5, 0.0, 0.0, 0.01, 1.0, 1.0), None);
-        assert_eq!(bounce_velocity(-0.5, 0.0, 0.0, 0.01, 1.0, 0.0), Some(0.5));
-        assert_eq!(bounce_velocity(0.5, 0.1, 0.0, 0.01, 1.0, 0.0), None);
-        assert_eq!(bounce_velocity(-5.0, 0.0, 0.0, 0.01, 0.0, 0.0), None);
+        assert_eq!(bounce_velocity(-0.5, 0.0, 0.0, 0.01, 0.04, 1.0, 1.0), None);
+        assert_eq!(
+            bounce_velocity(-0.5, 0.0, 0.0, 0.01, 0.04, 1.0, 0.0),
+            Some(0.5)
+        );
+        assert_eq!(bounce_velocity(0.5, 0.1, 0.0, 0.01, 0.04, 1.0, 0.0), None);
+        assert_eq!(bounce_velocity(-5.0, 0.0, 0.0, 0.01, 0.04, 0.0, 0.0), None);
+    }
+
+    #[test]
+    fn a_body_leaving_the_surface_does_not_hit_it_again_in_the_same_step() {
+        let (g, h, dt) = (9.81f32, 1.0 / 120.0, 1.0 / 30.0);
+        // Leaving at 1.5 m/s from 1 mm up: back only after ~0.3 s.
+        assert_eq!(bounce_velocity(1.5, 0.001, -g, h, dt, 1.0, 0.0), None);
+        // Rising at 5 cm/s from 1 mm up: back after 15 ms, within the step, at √(u² + 2·g·s₀).
+        let u = 0.05 - 0.5 * g * h;
+        let expected = (u * u + 2.0 * g * 0.001).sqrt();
+        let v = bounce_velocity(0.05, 0.001, -g, h, dt, 1.0, 0.0).expect("it lands again");
+        assert!(
+            (v - expected).abs() < 1e-5,
+            "rebound {v}, expected {expected}"
+        );
     }
 }
