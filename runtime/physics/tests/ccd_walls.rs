@@ -152,10 +152,29 @@ fn count_through(
     through.iter().filter(|&&t| t).count()
 }
 
+/// Eight seeds of bullet orientations and spins: a tetrahedron resting tilted against a
+/// wall after its impact, in one seed in five, took GJK's normal (noise for shapes that
+/// barely touch, and for a wall 10 km wide) or its own face as the contact's and crept
+/// through the wall at precise.
 #[test]
 fn bullets_never_pass_static_walls_of_any_width_shape_or_preset() {
-    let mut rng = Rng(1);
     let mut failures = Vec::new();
+    for seed in 1..=8 {
+        let mut rng = Rng(seed);
+        static_walls(&mut rng, &mut failures);
+    }
+    for f in &failures {
+        println!("{f}");
+    }
+    assert!(
+        failures.is_empty(),
+        "{} cases tunnelled (expected none): {failures:#?}",
+        failures.len()
+    );
+}
+
+/// Every static wall case once, with bullet orientations and spins from `rng`.
+fn static_walls(rng: &mut Rng, failures: &mut Vec<String>) {
     for preset in PhysicsPreset::ALL {
         for half_width in [0.5f32, 12.0, 100.0, 5_000.0] {
             for shape in [WallShape::Cuboid, WallShape::Hull, WallShape::TriMesh] {
@@ -164,7 +183,7 @@ fn bullets_never_pass_static_walls_of_any_width_shape_or_preset() {
                         let mut w = PhysicsWorld::new(zero_g(preset));
                         let wall = w.insert_body(RigidBodyDesc::fixed());
                         w.insert_collider(wall_collider(shape, half_width), wall);
-                        let bullets = fire(&mut w, half_width, speed, bullet, &mut rng);
+                        let bullets = fire(&mut w, half_width, speed, bullet, rng);
                         let n = count_through(&mut w, &bullets, wall, half_width, 0.25);
                         if n > 0 {
                             failures.push(format!(
@@ -179,14 +198,6 @@ fn bullets_never_pass_static_walls_of_any_width_shape_or_preset() {
             }
         }
     }
-    for f in &failures {
-        println!("{f}");
-    }
-    assert!(
-        failures.is_empty(),
-        "{} cases tunnelled (expected none): {failures:#?}",
-        failures.len()
-    );
 }
 
 #[test]

@@ -8,6 +8,7 @@ use super::gjk::{gjk_distance, GjkStatus};
 use super::narrow_stats::NarrowStats;
 use super::polygon_clip::clip_features;
 use super::raw_manifold::RawManifold;
+use super::separating_axis::{convex_gap, core_reach, separation_along};
 use crate::pose::Pose;
 use crate::shape::ConvexCore;
 
@@ -18,6 +19,16 @@ pub const CLIP_REFERENCE_MIN_COS: f32 = 0.7;
 /// Core distance (metres) below which GJK's answer is treated as touching and EPA supplies
 /// the normal instead (a GJK normal from a near-zero vector is noise). Bounded `[1e-7, 1e-3]`.
 pub const EPA_SWITCH_DISTANCE: f32 = 1e-5;
+
+/// A core whose reach is more than this many times the other's gets its contact axis from
+/// [`convex_gap`]: of GJK's normal and the face normals of both cores, the one they are
+/// furthest apart along, measured from support points. Bounded `[10, ∞)`: below it GJK's rounding is well under the
+/// smaller core's size.
+pub const LARGE_CORE_RATIO: f32 = 100.0;
+
+/// Two candidate reference faces whose separations differ by less than this (relative, in
+/// metres per metre of separation, plus this in metres) are a tie. Bounded `[0, 1e-3]`.
+pub const FACE_CHOICE_TOLERANCE: f32 = 1e-5;
 
 /// Scratch buffers reused across calls.
 #[derive(Debug, Default)]
@@ -61,6 +72,24 @@ pub(crate) fn convex_convex(
         }
         (e.normal, -e.depth - ra - rb, e.point_a, e.point_b)
     };
+    // A core far larger than the other (a wall kilometres wide, a long triangle) puts
+    // GJK's and EPA's simplices kilometres from the contact: their normal is off by 1e-4 rad
+    // of rounding or, for a small body barely touching, by tens of degrees (a bullet resting
+    // against a 10 km hull wall was pushed sideways instead of back, and crept through it).
+    // The face normals of both cores, measured from support points, give the axis there.
+    let (reach_a, reach_b) = (core_reach(a), core_reach(b));
+    let (n, sep, wa, wb) = if reach_a.max(reach_b) > LARGE_CORE_RATIO * reach_a.min(reach_b) {
+        // The best lower bound on the distance among GJK's normal and the face normals.
+        let (gap, axis) = convex_gap(a, pa, ra, b, pb, rb);
+        if gap > margin {
+            return None;
+        }
+        let wa = pa.transform_point(a.support(pa.inverse_transform_vector(axis)));
+        let wb = pb.transform_point(b.support(pb.inverse_transform_vector(-axis)));
+        (axis, gap, wa, wb)
+    } else {
+        (n, sep, wa, wb)
+    };
     let single = || {
         let p = (wa + n * ra + wb - n * rb) * 0.5;
         RawManifold::single(n, p, sep, 0)
@@ -76,11 +105,25 @@ pub(crate) fn convex_convex(
     }
     let ca = fa_n.map(|fnrm| (pa.rotation * fnrm).dot(n));
     let cb = fb_n.map(|fnrm| -(pb.rotation * fnrm).dot(n));
-    let use_a = match (ca, cb) {
-        (Some(x), Some(y)) => x + 0.01 >= y,
-        (Some(_), None) => true,
-        (None, Some(_)) => false,
-        (None, None) => return Some(single()),
+    let use_a = match (fa_n, fb_n, ca, cb) {
+        // Two faces: the one the shapes are further apart along is the contact's face (the
+        // separating-axis choice). Which is closer to the GJK/EPA normal decides only a tie:
+        // that normal is noise for shapes that barely touch, and a bullet resting tilted
+        // against a wall took its own face as the reference, pushed along it 4.8° off the
+        // wall's normal and slid through the wall.
+        (Some(na), Some(nb), Some(x), Some(y)) => {
+            let sep_a = separation_along(a, pa, b, pb, pa.rotation * na);
+            let sep_b = separation_along(a, pa, b, pb, -(pb.rotation * nb));
+            if (sep_a - sep_b).abs() > FACE_CHOICE_TOLERANCE * (1.0 + sep_a.abs().max(sep_b.abs()))
+            {
+                sep_a > sep_b
+            } else {
+                x + 0.01 >= y
+            }
+        }
+        (_, _, Some(_), None) => true,
+        (_, _, None, Some(_)) => false,
+        _ => return Some(single()),
     };
     let (cos, ref_n) = if use_a {
         (ca.unwrap_or(0.0), pa.rotation * fa_n.unwrap_or(Vec3::ZERO))

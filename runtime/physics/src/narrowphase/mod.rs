@@ -16,6 +16,7 @@ pub mod narrow_stats;
 pub mod pair_hasher;
 pub(crate) mod polygon_clip;
 pub mod raw_manifold;
+pub(crate) mod separating_axis;
 pub(crate) mod sphere_box;
 pub(crate) mod sphere_sphere;
 pub mod trimesh_contacts;
