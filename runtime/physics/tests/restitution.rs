@@ -204,22 +204,11 @@ fn a_column_of_elastic_balls_never_gains_energy() {
                     b
                 })
                 .collect();
-            let energy = |w: &PhysicsWorld| -> f32 {
-                balls
-                    .iter()
-                    .map(|&b| {
-                        let body = w.body(b).unwrap();
-                        let m = body.mass();
-                        0.5 * m * body.linvel().length_squared()
-                            + m * G * (body.translation().y - r)
-                    })
-                    .sum()
-            };
-            let e0 = energy(&w);
+            let e0 = energy(&w, &balls, G, r);
             let mut most = 0.0f32;
             for _ in 0..(20.0 / s.dt) as usize {
                 w.step();
-                most = most.max(energy(&w) / e0);
+                most = most.max(energy(&w, &balls, G, r) / e0);
             }
             println!("{preset}, {n} balls: energy at most {most:.3} of the start");
             assert!(
@@ -291,27 +280,8 @@ fn elastic_box(preset: PhysicsPreset, gravity: f32) -> f32 {
         w.insert_collider(ColliderDesc::sphere(r).restitution(1.0).friction(0.0), b);
         balls.push(b);
     }
-    let energy = |w: &PhysicsWorld| -> f32 {
-        balls
-            .iter()
-            .map(|&b| {
-                let body = w.body(b).unwrap();
-                let m = body.mass();
-                0.5 * m * body.linvel().length_squared() + m * gravity * body.translation().y
-            })
-            .sum()
-    };
     // Potential energy measured from the floor, so the figure is not dominated by it.
-    let floor = -half + r;
-    let e_of = |w: &PhysicsWorld| {
-        energy(w)
-            - balls
-                .iter()
-                .map(|&b| w.body(b).unwrap().mass())
-                .sum::<f32>()
-                * gravity
-                * floor
-    };
+    let e_of = |w: &PhysicsWorld| energy(w, &balls, gravity, -half + r);
     let e0 = e_of(&w);
     let mut worst = 0.0f32;
     for i in 0..10_000 {
@@ -327,4 +297,17 @@ fn elastic_box(preset: PhysicsPreset, gravity: f32) -> f32 {
         e1 / e0
     );
     worst
+}
+
+/// Kinetic plus potential energy of `balls` under `gravity` (m/s², pulling along −y), the
+/// potential measured from height `floor`, J.
+fn energy(w: &PhysicsWorld, balls: &[BodyHandle], gravity: f32, floor: f32) -> f32 {
+    balls
+        .iter()
+        .map(|&b| {
+            let body = w.body(b).unwrap();
+            let m = body.mass();
+            0.5 * m * body.linvel().length_squared() + m * gravity * (body.translation().y - floor)
+        })
+        .sum()
 }

@@ -4,7 +4,7 @@
 use glam::Vec3;
 
 use super::epa::{epa_penetration, EpaStatus};
-use super::gjk::{gjk_distance, GjkStatus};
+use super::gjk::{gjk_distance, support, GjkStatus};
 use super::narrow_stats::NarrowStats;
 use super::polygon_clip::clip_features;
 use super::raw_manifold::RawManifold;
@@ -84,9 +84,8 @@ pub(crate) fn convex_convex(
         if gap > margin {
             return None;
         }
-        let wa = pa.transform_point(a.support(pa.inverse_transform_vector(axis)));
-        let wb = pb.transform_point(b.support(pb.inverse_transform_vector(-axis)));
-        (axis, gap, wa, wb)
+        let s = support(a, pa, b, pb, axis);
+        (axis, gap, s.a, s.b)
     } else {
         (n, sep, wa, wb)
     };

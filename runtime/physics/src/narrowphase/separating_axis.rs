@@ -4,7 +4,7 @@
 
 use glam::Vec3;
 
-use super::gjk::{gjk_distance, GjkStatus};
+use super::gjk::{gjk_distance, support, GjkStatus};
 use crate::pose::Pose;
 use crate::shape::ConvexCore;
 
@@ -18,9 +18,7 @@ pub(crate) fn separation_along(
     pb: &Pose,
     normal: Vec3,
 ) -> f32 {
-    let sa = pa.transform_point(a.support(pa.inverse_transform_vector(normal)));
-    let sb = pb.transform_point(b.support(pb.inverse_transform_vector(-normal)));
-    normal.dot(sb - sa)
+    -normal.dot(support(a, pa, b, pb, normal).w)
 }
 
 /// Largest distance of a core's points from its frame origin, metres.
