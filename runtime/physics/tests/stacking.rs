@@ -206,7 +206,7 @@ fn settle(
 /// 0.5 stands (no box 10 cm off or 5 cm down): friction must not be what holds a stack up. (`fast` topples
 /// some of the random stacks with friction too: the soft contacts of 30 Hz × 2 let a box
 /// under an off-centre load tip a few milliradians while the stack settles.) On a
-/// half-space and on a ground box.
+/// half-space and on a ground box; and tall centred columns.
 #[test]
 fn frictionless_stacks_hold_still_at_every_preset() {
     let cube = Vec3::splat(0.5);
@@ -261,6 +261,32 @@ fn frictionless_stacks_hold_still_at_every_preset() {
                         ));
                     }
                 }
+            }
+        }
+    }
+    // Tall centred columns, which hold without levelling and must still: 10 boxes at fast,
+    // 20 at balanced and precise (a face levelled with no leak of its own rocked them over).
+    for (preset, n) in [
+        (PhysicsPreset::Fast, 10),
+        (PhysicsPreset::Balanced, 20),
+        (PhysicsPreset::Precise, 20),
+    ] {
+        let column: Vec<_> = (0..n)
+            .map(|i| (Vec3::new(0.0, 0.5 + i as f32, 0.0), cube))
+            .collect();
+        checked += 1;
+        for (i, (sideways, dy)) in settle(preset, &column, false, 0.0).into_iter().enumerate() {
+            // Soft contacts under a column's weight: a few centimetres each at fast.
+            let per_contact = if preset == PhysicsPreset::Fast {
+                0.03
+            } else {
+                0.01
+            };
+            if sideways >= 1e-3 || dy.abs() >= per_contact * (i + 1) as f32 {
+                failures.push(format!(
+                    "{preset}, a frictionless column of {n}: box {i} moved {sideways} m \
+                     sideways and {dy} m up in 20 s"
+                ));
             }
         }
     }

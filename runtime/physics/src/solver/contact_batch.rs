@@ -155,6 +155,12 @@ pub(crate) struct NormalRows<const N: usize> {
 /// soft contact tilts under an off-centre load.
 pub const LEVEL_MAX_FRICTION: f32 = 1e-3;
 
+/// How much of a levelled face's leak is the patch's mean impulse rather than the point's
+/// own. Bounded `(0, 1)`: at 1 the face has no leak at all in tilt, and a frictionless column
+/// of 20 boxes at 60 Hz × 4 (10 at 30 Hz × 2), which holds without levelling, rocked and fell
+/// after 8 s; from 0.95 down to 0.5 the columns hold and so do the offset stacks of 0 leak.
+pub const LEVEL_SHARE: f32 = 0.75;
+
 /// The lanes whose face [`ManifoldRows::level_patch`] levelled: their points' rows leak the
 /// patch's mean impulse instead of their own.
 #[derive(Clone, Copy, Debug)]
@@ -552,9 +558,11 @@ impl<const N: usize, M: ManifoldRows, L: Levers<N>> ContactBatch<N, M, L> {
         let mut leveled = self.manifold.level_patch(&self.points, frictionless, &rows);
         for j in 0..N {
             let cp = &mut self.points[j];
+            let own = cp.normal_impulse;
+            let level_share = F::splat(LEVEL_SHARE);
             let leak = leveled
                 .lanes
-                .select(leveled.mean_impulse, cp.normal_impulse);
+                .select(own + level_share * (leveled.mean_impulse - own), own);
             let imp =
                 -cp.normal_mass * mass_scale[j] * (vn[j] + rows.bias[j]) - impulse_scale[j] * leak;
             let new = fmax(zero, cp.normal_impulse + imp);

@@ -152,9 +152,10 @@ impl ManifoldRows for FaceContact {
         }
     }
 
-    /// A resting frictionless face (every point of the patch pressed in) leaks the patch's
-    /// mean impulse from each point's row instead of the point's own, so it is soft in depth
-    /// and rigid in tilt.
+    /// A resting frictionless face (every point of the patch pressed in) leaks mostly the
+    /// patch's mean impulse from each point's row instead of the point's own
+    /// ([`LEVEL_SHARE`](super::contact_batch::LEVEL_SHARE) of it), so it is soft in depth and
+    /// nearly rigid in tilt.
     ///
     /// A soft row settles at a depth proportional to the impulse it carries, so independent
     /// soft rows make a face as compliant in tilt as in depth: a load off the face's centre
@@ -164,7 +165,9 @@ impl ManifoldRows for FaceContact {
     /// centre slid 17.8 m apart in 20 s at 30 Hz × 2. With the mean leaked, the rows' fixed
     /// point has every point at the same depth whatever the spread of their impulses, while
     /// the patch as a whole keeps the soft contact's stiffness and static deflection (the
-    /// rows' mean is the shared step's target). Impulses stay non-negative point by point, so
+    /// rows' mean is the shared step's target); the point's own share keeps the tilt damped
+    /// (a frictionless 20-box column rocked and fell without it). Impulses stay non-negative
+    /// point by point, so
     /// a face whose load leaves its support still tips over its edge. Only frictionless
     /// faces: a face with friction resting on two supports (a brick in a pyramid) cannot be
     /// level on both, and rows without their own leak wind up against each other (the 20-row
