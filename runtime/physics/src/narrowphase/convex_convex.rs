@@ -8,7 +8,7 @@ use super::gjk::{gjk_distance, support, GjkStatus};
 use super::narrow_stats::NarrowStats;
 use super::polygon_clip::clip_features;
 use super::raw_manifold::RawManifold;
-use super::separating_axis::{convex_gap, core_reach, separation_along};
+use super::separating_axis::{convex_gap_after, core_reach, separation_along};
 use crate::pose::Pose;
 use crate::shape::ConvexCore;
 
@@ -21,9 +21,9 @@ pub const CLIP_REFERENCE_MIN_COS: f32 = 0.7;
 pub const EPA_SWITCH_DISTANCE: f32 = 1e-5;
 
 /// A core whose reach is more than this many times the other's gets its contact axis from
-/// [`convex_gap`]: of GJK's normal and the face normals of both cores, the one they are
-/// furthest apart along, measured from support points. Bounded `[10, ∞)`: below it GJK's rounding is well under the
-/// smaller core's size.
+/// [`convex_gap_after`]: of GJK's normal and the face normals of both cores, the one they are
+/// furthest apart along, measured from support points. Bounded `[10, ∞)`: below it GJK's
+/// rounding is well under the smaller core's size.
 pub const LARGE_CORE_RATIO: f32 = 100.0;
 
 /// Two candidate reference faces whose separations differ by less than this (relative, in
@@ -80,7 +80,7 @@ pub(crate) fn convex_convex(
     let (reach_a, reach_b) = (core_reach(a), core_reach(b));
     let (n, sep, wa, wb) = if reach_a.max(reach_b) > LARGE_CORE_RATIO * reach_a.min(reach_b) {
         // The best lower bound on the distance among GJK's normal and the face normals.
-        let (gap, axis) = convex_gap(a, pa, ra, b, pb, rb);
+        let (gap, axis) = convex_gap_after(&g, a, pa, ra, b, pb, rb);
         if gap > margin {
             return None;
         }

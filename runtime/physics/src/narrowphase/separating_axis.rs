@@ -4,7 +4,7 @@
 
 use glam::Vec3;
 
-use super::gjk::{gjk_distance, support, GjkStatus};
+use super::gjk::{gjk_distance, support, GjkResult, GjkStatus};
 use crate::pose::Pose;
 use crate::shape::ConvexCore;
 
@@ -47,8 +47,21 @@ pub(crate) fn convex_gap(
     pb: &Pose,
     rb: f32,
 ) -> (f32, Vec3) {
+    convex_gap_after(&gjk_distance(a, pa, b, pb), a, pa, ra, b, pb, rb)
+}
+
+/// [`convex_gap`] from GJK's result `g` for the same cores and poses (the contact generation
+/// has run it already).
+pub(crate) fn convex_gap_after(
+    g: &GjkResult,
+    a: &ConvexCore<'_>,
+    pa: &Pose,
+    ra: f32,
+    b: &ConvexCore<'_>,
+    pb: &Pose,
+    rb: f32,
+) -> (f32, Vec3) {
     let along = |n: Vec3| separation_along(a, pa, b, pb, n);
-    let g = gjk_distance(a, pa, b, pb);
     let mut best = if g.status == GjkStatus::Overlapping || g.normal == Vec3::ZERO {
         (
             f32::MIN,

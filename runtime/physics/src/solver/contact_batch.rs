@@ -198,12 +198,12 @@ pub(crate) trait ManifoldRows: Copy + std::fmt::Debug {
         vn: &mut [F; N],
         applied: &mut [F; N],
     );
-    /// After the shared step, before the per-point sweep: which of `lanes` hold a resting
-    /// face whose points leak their mean impulse (see `FaceContact::level_patch`).
+    /// After the shared step, before the per-point sweep: which lanes hold a resting
+    /// frictionless face whose points leak their mean impulse (see
+    /// `FaceContact::level_patch`).
     fn level_patch<const N: usize>(
         &self,
         points: &[PointLanes; N],
-        lanes: F,
         rows: &NormalRows<N>,
     ) -> Leveled;
     /// After point `j` took `imp`: how the later points' normal velocities change.
@@ -241,7 +241,7 @@ impl ManifoldRows for PointContact {
     ) {
     }
     #[inline(always)]
-    fn level_patch<const N: usize>(&self, _: &[PointLanes; N], _: F, _: &NormalRows<N>) -> Leveled {
+    fn level_patch<const N: usize>(&self, _: &[PointLanes; N], _: &NormalRows<N>) -> Leveled {
         Leveled::NONE
     }
     #[inline(always)]
@@ -554,12 +554,11 @@ impl<const N: usize, M: ManifoldRows, L: Levers<N>> ContactBatch<N, M, L> {
         let mut applied = [zero; N];
         self.manifold
             .solve_shared(&mut self.points, &rows, &mut vn, &mut applied);
-        let frictionless = self.friction.simd_lt(F::splat(LEVEL_MAX_FRICTION));
-        let mut leveled = self.manifold.level_patch(&self.points, frictionless, &rows);
+        let mut leveled = self.manifold.level_patch(&self.points, &rows);
+        let level_share = F::splat(LEVEL_SHARE);
         for j in 0..N {
             let cp = &mut self.points[j];
             let own = cp.normal_impulse;
-            let level_share = F::splat(LEVEL_SHARE);
             let leak = leveled
                 .lanes
                 .select(own + level_share * (leveled.mean_impulse - own), own);

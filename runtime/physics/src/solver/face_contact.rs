@@ -2,7 +2,9 @@
 //! [`ContactBatch`](super::contact_batch::ContactBatch): the shared normal step over its
 //! points, the coupling between its points' normal rows, and twist friction about the normal.
 
-use super::contact_batch::{fmax, set, Leveled, ManifoldRows, NormalRows, PointLanes};
+use super::contact_batch::{
+    fmax, set, Leveled, ManifoldRows, NormalRows, PointLanes, LEVEL_MAX_FRICTION,
+};
 use super::contact_constraint::{PreparedManifold, PAIR_SLOT};
 use super::lanes::{Velocities, F, V3};
 
@@ -14,6 +16,9 @@ pub(crate) struct FaceContact {
     soft_compliance: F,
     /// Lane mask: the shared normal step applies.
     patch: F,
+    /// Lane mask: a patch with friction below `LEVEL_MAX_FRICTION`, levelled while it rests
+    /// ([`FaceContact::level_patch`]); set once per step, with the lane.
+    frictionless: F,
     patch_k: F,
     row_sum: [F; 4],
     coupling: [F; 6],
@@ -35,6 +40,7 @@ impl ManifoldRows for FaceContact {
     const EMPTY: Self = Self {
         soft_compliance: F::ZERO,
         patch: F::ZERO,
+        frictionless: F::ZERO,
         patch_k: F::ZERO,
         row_sum: [F::ZERO; 4],
         coupling: [F::ZERO; 6],
@@ -63,6 +69,12 @@ impl ManifoldRows for FaceContact {
             0.0
         };
         set(&mut self.patch, l, mask);
+        let level = if c.block.patch && c.friction.friction < LEVEL_MAX_FRICTION {
+            f32::from_bits(u32::MAX)
+        } else {
+            0.0
+        };
+        set(&mut self.frictionless, l, level);
         set(&mut self.patch_k, l, c.block.patch_k);
         for k in 0..4 {
             set(&mut self.row_sum[k], l, c.block.row_sum[k]);
@@ -167,8 +179,7 @@ impl ManifoldRows for FaceContact {
     /// the patch as a whole keeps the soft contact's stiffness and static deflection (the
     /// rows' mean is the shared step's target); the point's own share keeps the tilt damped
     /// (a frictionless 20-box column rocked and fell without it). Impulses stay non-negative
-    /// point by point, so
-    /// a face whose load leaves its support still tips over its edge. Only frictionless
+    /// point by point, so a face whose load leaves its support still tips over its edge. Only frictionless
     /// faces: a face with friction resting on two supports (a brick in a pyramid) cannot be
     /// level on both, and rows without their own leak wind up against each other (the 20-row
     /// pyramid slumped 3.7 m instead of 2.5 cm).
@@ -176,10 +187,9 @@ impl ManifoldRows for FaceContact {
     fn level_patch<const N: usize>(
         &self,
         points: &[PointLanes; N],
-        lanes: F,
         rows: &NormalRows<N>,
     ) -> Leveled {
-        let mut flat = self.patch & lanes;
+        let mut flat = self.frictionless;
         if !rows.use_bias || !flat.any() {
             return Leveled::NONE;
         }
