@@ -12,8 +12,7 @@ use crate::physics_world::SolverSlot;
 use crate::rigid_body::mask_mat;
 use crate::solver::body_state::BodyState;
 use crate::solver::contact_constraint::{
-    prepare, ConstraintPoint, ContactConstraint, FrictionPart, ManifoldRef, NormalBlock,
-    PreparedManifold,
+    prepare, ContactConstraint, FrictionPart, ManifoldRef, NormalBlock, PreparedManifold,
 };
 use crate::solver::noise::matrix_without_noise;
 use crate::solver::restitution::bounce_velocity;
@@ -234,152 +233,157 @@ impl PhysicsWorld {
             &self.solver_bodies,
             &self.solver_states,
         );
-        let prepare_one = |r: &ManifoldRef, overloads: &mut Vec<(u32, f32, f32, f32, f32)>| {
-            let pair = &pairs[r.pair as usize];
-            let m = &pair.manifolds[r.manifold as usize];
-            let n = m.normal;
-            let t1 = m.tangent1;
-            let t2 = n.cross(t1);
-            let mut c = ContactConstraint {
-                body_a: r.body_a,
-                body_b: r.body_b,
-                writes: r.writes,
-                angular: r.angular,
-                normal: n.into(),
-                tangent: [t1.into(), t2.into()],
-                restitution: pair.restitution,
-                bounce_accel: 0.0,
-                mass_scale: support_mass_scale(
-                    &states[r.body_a as usize],
-                    &states[r.body_b as usize],
-                    n,
-                    s.gravity,
-                    s.max_support_mass_ratio,
-                    s.dt,
-                ),
-                softness: Softness::RIGID,
-                count: r.count,
-                friction: FrictionPart::default(),
-                block: NormalBlock::default(),
-            };
-            let mut points = [ConstraintPoint::default(); 4];
-            let mut anchors = [(Vec3A::ZERO, Vec3A::ZERO); 4];
-            let (mut tangent, mut twist) = (Vec3::ZERO, 0.0f32);
-            let count = usize::from(r.count);
-            for (k, p) in m.points.iter().take(count).enumerate() {
-                anchors[k] = (p.anchor_a.into(), p.anchor_b.into());
-                tangent += p.tangent_impulse;
-                twist += p.twist_impulse;
-                points[k].base_separation = p.separation;
-                points[k].normal_impulse = p.normal_impulse;
-            }
-            c.friction.tangent_impulse = [tangent.dot(t1), tangent.dot(t2)];
-            c.friction.twist_impulse = twist;
-            prepare(
-                &mut c,
-                &mut points[..count],
-                &anchors[..count],
-                bodies,
-                states,
-                pair.static_friction,
-                pair.dynamic_friction,
-                s.static_friction_speed,
-            );
-            if pair.restitution > 0.0 {
-                // Relative normal acceleration (gravity, forces) for the impact speed.
-                let accel = n.dot(Vec3::from(
-                    bodies[r.body_b as usize].lin_acc - bodies[r.body_a as usize].lin_acc,
-                ));
-                c.bounce_accel = accel;
-                for cp in &mut points[..count] {
-                    cp.bounce_velocity = bounce_velocity(
-                        cp.relative_velocity,
-                        cp.base_separation,
-                        accel,
-                        h,
+        let prepare_one =
+            |r: &ManifoldRef,
+             out: &mut PreparedManifold,
+             overloads: &mut Vec<(u32, f32, f32, f32, f32)>| {
+                // Written in place: the constraint whole, the first `count` points field by field.
+                let PreparedManifold {
+                    constraint: c,
+                    points,
+                } = out;
+                let pair = &pairs[r.pair as usize];
+                let m = &pair.manifolds[r.manifold as usize];
+                let n = m.normal;
+                let t1 = m.tangent1;
+                let t2 = n.cross(t1);
+                *c = ContactConstraint {
+                    body_a: r.body_a,
+                    body_b: r.body_b,
+                    writes: r.writes,
+                    angular: r.angular,
+                    normal: n.into(),
+                    tangent: [t1.into(), t2.into()],
+                    restitution: pair.restitution,
+                    bounce_accel: 0.0,
+                    mass_scale: support_mass_scale(
+                        &states[r.body_a as usize],
+                        &states[r.body_b as usize],
+                        n,
+                        s.gravity,
+                        s.max_support_mass_ratio,
                         s.dt,
-                        pair.restitution,
-                        s.restitution_threshold,
-                    )
-                    .unwrap_or(f32::NAN);
+                    ),
+                    softness: Softness::RIGID,
+                    count: r.count,
+                    friction: FrictionPart::default(),
+                    block: NormalBlock::default(),
+                };
+                let mut anchors = [(Vec3A::ZERO, Vec3A::ZERO); 4];
+                let (mut tangent, mut twist) = (Vec3::ZERO, 0.0f32);
+                let count = usize::from(r.count);
+                for (k, p) in m.points.iter().take(count).enumerate() {
+                    anchors[k] = (p.anchor_a.into(), p.anchor_b.into());
+                    tangent += p.tangent_impulse;
+                    twist += p.twist_impulse;
+                    points[k].base_separation = p.separation;
+                    points[k].normal_impulse = p.normal_impulse;
                 }
-            }
-            // Static contacts are twice as stiff (Box2D v3); both stiffen with load, and
-            // further where the load would press them deeper than the penetration budget
-            // of the smaller body's size.
-            let base_hz = if r.writes == 3 { hertz } else { 2.0 * hertz };
-            let (load, mass) = points[..count].iter().fold((0.0f32, 0.0f32), |(p, m), cp| {
-                (p + cp.normal_impulse, m + cp.normal_mass)
-            });
-            let own = mass * g_h;
-            let ratio = if own > 0.0 { load / own } else { 1.0 };
-            let cap = if pair.ball_ball {
-                max_ball_hertz
-            } else {
-                max_hertz
-            };
-            // The load: the largest it carried recently, and from the step it is made at
-            // least the weight of the body on top (its warm-started load lags by steps, and
-            // a contact under a heavy body sinks meanwhile).
-            let remembered = load.max(pair.load_memory);
-            let upper = if s.gravity.dot(n) < 0.0 {
-                r.body_b
-            } else {
-                r.body_a
-            };
-            let touching = points[..count]
-                .iter()
-                .any(|cp| cp.base_separation <= s.linear_slop);
-            let weight = if touching {
-                g * mass_of(&states[upper as usize])
-            } else {
-                0.0
-            };
-            let load_accel = if mass > 0.0 {
-                (remembered / (mass * h)).max(weight / mass)
-            } else {
-                0.0
-            };
-            let budget = s.max_penetration_fraction * pair.size;
-            let load_hz = Softness::load_hertz(base_hz, ratio, cap);
-            let omega_load = 2.0 * std::f32::consts::PI * load_hz;
-            // Most contacts settle within their budget at the load stiffness: nothing more.
-            c.softness = if load_accel <= budget * omega_load * omega_load {
-                Softness::new(load_hz, s.contact_damping_ratio, h)
-            } else {
-                let needed = Softness::size_hertz(load_accel, budget);
-                let size_hz = needed.min(max_size_hertz);
-                let used = size_hz.max(load_hz);
-                // The mass it carries, in units of its own effective mass.
-                let stiffening = (used / base_hz).powi(2);
-                let carried = if g > 0.0 { load_accel / g } else { stiffening };
-                // Deeper than the budget allows even at the stiffest contact: named once.
-                let omega = 2.0 * std::f32::consts::PI * used;
-                let depth = load_accel / (omega * omega);
-                if depth > OVERLOAD_DEPTH_FACTOR * budget
-                    && remembered > 0.0
-                    && !pair.overload_reported
-                {
-                    overloads.push((r.pair, depth, budget, needed, carried));
+                c.friction.tangent_impulse = [tangent.dot(t1), tangent.dot(t2)];
+                c.friction.twist_impulse = twist;
+                prepare(
+                    c,
+                    &mut points[..count],
+                    &anchors[..count],
+                    bodies,
+                    states,
+                    pair.static_friction,
+                    pair.dynamic_friction,
+                    s.static_friction_speed,
+                );
+                if pair.restitution > 0.0 {
+                    // Relative normal acceleration (gravity, forces) for the impact speed.
+                    let accel = n.dot(Vec3::from(
+                        bodies[r.body_b as usize].lin_acc - bodies[r.body_a as usize].lin_acc,
+                    ));
+                    c.bounce_accel = accel;
+                    for cp in &mut points[..count] {
+                        cp.bounce_velocity = bounce_velocity(
+                            cp.relative_velocity,
+                            cp.base_separation,
+                            accel,
+                            h,
+                            s.dt,
+                            pair.restitution,
+                            s.restitution_threshold,
+                        )
+                        .unwrap_or(f32::NAN);
+                    }
                 }
-                if size_hz > load_hz {
-                    Softness::for_supported_mass(
-                        size_hz,
-                        s.contact_damping_ratio,
-                        h,
-                        carried.max(stiffening),
-                    )
+                // Static contacts are twice as stiff (Box2D v3); both stiffen with load, and
+                // further where the load would press them deeper than the penetration budget
+                // of the smaller body's size.
+                let base_hz = if r.writes == 3 { hertz } else { 2.0 * hertz };
+                let (load, mass) = points[..count].iter().fold((0.0f32, 0.0f32), |(p, m), cp| {
+                    (p + cp.normal_impulse, m + cp.normal_mass)
+                });
+                let own = mass * g_h;
+                let ratio = if own > 0.0 { load / own } else { 1.0 };
+                let cap = if pair.ball_ball {
+                    max_ball_hertz
                 } else {
+                    max_hertz
+                };
+                // The load: the largest it carried recently, and from the step it is made at
+                // least the weight of the body on top (its warm-started load lags by steps, and
+                // a contact under a heavy body sinks meanwhile).
+                let remembered = load.max(pair.load_memory);
+                let upper = if s.gravity.dot(n) < 0.0 {
+                    r.body_b
+                } else {
+                    r.body_a
+                };
+                let touching = points[..count]
+                    .iter()
+                    .any(|cp| cp.base_separation <= s.linear_slop);
+                let weight = if touching {
+                    g * mass_of(&states[upper as usize])
+                } else {
+                    0.0
+                };
+                let load_accel = if mass > 0.0 {
+                    (remembered / (mass * h)).max(weight / mass)
+                } else {
+                    0.0
+                };
+                let budget = s.max_penetration_fraction * pair.size;
+                let load_hz = Softness::load_hertz(base_hz, ratio, cap);
+                let omega_load = 2.0 * std::f32::consts::PI * load_hz;
+                // Most contacts settle within their budget at the load stiffness: nothing more.
+                c.softness = if load_accel <= budget * omega_load * omega_load {
                     Softness::new(load_hz, s.contact_damping_ratio, h)
-                }
+                } else {
+                    let needed = Softness::size_hertz(load_accel, budget);
+                    let size_hz = needed.min(max_size_hertz);
+                    let used = size_hz.max(load_hz);
+                    // The mass it carries, in units of its own effective mass.
+                    let stiffening = (used / base_hz).powi(2);
+                    let carried = if g > 0.0 { load_accel / g } else { stiffening };
+                    // Deeper than the budget allows even at the stiffest contact: named once.
+                    let omega = 2.0 * std::f32::consts::PI * used;
+                    let depth = load_accel / (omega * omega);
+                    if depth > OVERLOAD_DEPTH_FACTOR * budget
+                        && remembered > 0.0
+                        && !pair.overload_reported
+                    {
+                        overloads.push((r.pair, depth, budget, needed, carried));
+                    }
+                    if size_hz > load_hz {
+                        Softness::for_supported_mass(
+                            size_hz,
+                            s.contact_damping_ratio,
+                            h,
+                            carried.max(stiffening),
+                        )
+                    } else {
+                        Softness::new(load_hz, s.contact_damping_ratio, h)
+                    }
+                };
             };
-            PreparedManifold {
-                constraint: c,
-                points,
-            }
-        };
         let mut overloads: Vec<(u32, f32, f32, f32, f32)> = Vec::new();
-        let prepare_one = |r: &ManifoldRef| prepare_one(r, &mut overloads);
+        let prepare_one = |r: &ManifoldRef, out: &mut PreparedManifold| {
+            prepare_one(r, out, &mut overloads);
+        };
         self.contact_batches
             .build(&self.manifold_refs, states, prepare_one);
         self.report_overloads(&overloads);

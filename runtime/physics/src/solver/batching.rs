@@ -77,32 +77,38 @@ pub(crate) struct ContactBatches {
     open: [Vec<OpenBatch>; LAYOUTS],
 }
 
-/// Packs the lanes of one batch at the end of `out`, preparing each manifold.
+/// Packs the lanes of one batch at the end of `out`, preparing each manifold in `scratch`
+/// (reused: a prepared manifold is larger than a lane, and copying one out per manifold
+/// showed in the pyramid's profile).
 fn pack<const N: usize, M: ManifoldRows, L: Levers<N>>(
     out: &mut Vec<ContactBatch<N, M, L>>,
     lanes: &[u32],
     manifolds: &[ManifoldRef],
     states: &[BodyState],
-    prepare: &mut impl FnMut(&ManifoldRef) -> PreparedManifold,
+    prepare: &mut impl FnMut(&ManifoldRef, &mut PreparedManifold),
+    scratch: &mut PreparedManifold,
 ) {
     out.push(ContactBatch::EMPTY);
     if let Some(b) = out.last_mut() {
         for (l, &id) in lanes.iter().enumerate() {
-            b.set_lane(l, id, &prepare(&manifolds[id as usize]), states);
+            prepare(&manifolds[id as usize], scratch);
+            b.set_lane(l, id, scratch, states);
         }
     }
 }
 
 impl ContactBatches {
-    /// Deals `manifolds` into batches, preparing each one (`prepare`) as its batch is
-    /// packed. Deterministic: it depends only on the manifolds and their order. Lanes report
+    /// Deals `manifolds` into batches, preparing each one (`prepare` fills the
+    /// `PreparedManifold` it is given: the constraint, and the first `count` points) as its
+    /// batch is packed. Deterministic: it depends only on the manifolds and their order. Lanes report
     /// their index in `manifolds`.
     pub(crate) fn build(
         &mut self,
         manifolds: &[ManifoldRef],
         states: &[BodyState],
-        mut prepare: impl FnMut(&ManifoldRef) -> PreparedManifold,
+        mut prepare: impl FnMut(&ManifoldRef, &mut PreparedManifold),
     ) {
+        let scratch = &mut PreparedManifold::default();
         self.four.clear();
         self.one.clear();
         self.four_linear.clear();
@@ -126,7 +132,7 @@ impl ContactBatches {
                 None => {
                     if open.len() == OPEN_BATCHES {
                         let oldest = open.remove(0);
-                        self.emit(layout, &oldest, manifolds, states, &mut prepare);
+                        self.emit(layout, &oldest, manifolds, states, &mut prepare, scratch);
                     }
                     let open = &mut self.open[layout];
                     open.push(OpenBatch::EMPTY);
@@ -137,13 +143,13 @@ impl ContactBatches {
             open[slot].push(i as u32, bodies);
             if open[slot].len == LANES {
                 let full = open.remove(slot);
-                self.emit(layout, &full, manifolds, states, &mut prepare);
+                self.emit(layout, &full, manifolds, states, &mut prepare, scratch);
             }
         }
         for layout in 0..LAYOUTS {
             let open = std::mem::take(&mut self.open[layout]);
             for b in &open {
-                self.emit(layout, b, manifolds, states, &mut prepare);
+                self.emit(layout, b, manifolds, states, &mut prepare, scratch);
             }
             self.open[layout] = open;
             self.open[layout].clear();
@@ -156,14 +162,29 @@ impl ContactBatches {
         batch: &OpenBatch,
         manifolds: &[ManifoldRef],
         states: &[BodyState],
-        prepare: &mut impl FnMut(&ManifoldRef) -> PreparedManifold,
+        prepare: &mut impl FnMut(&ManifoldRef, &mut PreparedManifold),
+        scratch: &mut PreparedManifold,
     ) {
         let lanes = &batch.lanes[..batch.len];
         match layout {
-            0 => pack(&mut self.four, lanes, manifolds, states, prepare),
-            1 => pack(&mut self.one, lanes, manifolds, states, prepare),
-            2 => pack(&mut self.four_linear, lanes, manifolds, states, prepare),
-            _ => pack(&mut self.one_linear, lanes, manifolds, states, prepare),
+            0 => pack(&mut self.four, lanes, manifolds, states, prepare, scratch),
+            1 => pack(&mut self.one, lanes, manifolds, states, prepare, scratch),
+            2 => pack(
+                &mut self.four_linear,
+                lanes,
+                manifolds,
+                states,
+                prepare,
+                scratch,
+            ),
+            _ => pack(
+                &mut self.one_linear,
+                lanes,
+                manifolds,
+                states,
+                prepare,
+                scratch,
+            ),
         }
     }
 
@@ -277,9 +298,9 @@ mod tests {
         let states = vec![BodyState::STATIC; bodies as usize];
         let mut batches = ContactBatches::default();
         let mut prepared_count = 0;
-        batches.build(&constraints, &states, |r| {
+        batches.build(&constraints, &states, |r, out| {
             prepared_count += 1;
-            prepared(r)
+            *out = prepared(r);
         });
         assert_eq!(prepared_count, constraints.len());
 

@@ -117,14 +117,14 @@ pub(crate) struct ManifoldRef {
 
 /// A constraint and its points, prepared for one step (lives on the stack while a batch
 /// is packed).
-#[derive(Clone, Copy, Debug)]
+#[derive(Clone, Copy, Debug, Default)]
 pub(crate) struct PreparedManifold {
     pub constraint: ContactConstraint,
     pub points: [ConstraintPoint; 4],
 }
 
 /// One manifold as a solver constraint.
-#[derive(Clone, Copy, Debug)]
+#[derive(Clone, Copy, Debug, Default)]
 pub(crate) struct ContactConstraint {
     pub body_a: u32,
     pub body_b: u32,

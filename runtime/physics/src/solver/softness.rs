@@ -53,6 +53,13 @@ pub struct Softness {
     pub impulse_scale: f32,
 }
 
+impl Default for Softness {
+    /// [`Softness::RIGID`].
+    fn default() -> Self {
+        Self::RIGID
+    }
+}
+
 impl Softness {
     /// Rigid constraint (no bias, full mass).
     pub const RIGID: Self = Self {
