@@ -4,6 +4,7 @@ mod broadphase_stage;
 pub mod ccd;
 mod contact_report_stage;
 pub mod joint_stage;
+mod jointed_masses;
 mod narrowphase_stage;
 mod prestep;
 mod sleep_stage;
