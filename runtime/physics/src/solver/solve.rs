@@ -152,9 +152,10 @@ fn integrate_positions(
             not_converged += u32::from(!step.converged);
             let q_new = q_old * step.rotation;
             b.dq = unit_rotation(q_new * b.q0.inverse());
-            st.dtheta += Vec3A::from(q_old * step.rotation_vector);
-            st.w = Vec3A::from(rotate(q_new, step.omega)) * b.ang_mask;
-            b.omega_body = step.omega;
+            st.dtheta += q_old * step.rotation_vector;
+            let omega = Vec3::from(step.omega);
+            st.w = Vec3A::from(rotate(q_new, omega)) * b.ang_mask;
+            b.omega_body = omega;
             b.omega_world = st.w;
             continue;
         }
