@@ -3,6 +3,7 @@
 //! as one body (a ragdoll on the ground rings on its contacts with all its mass), bodies
 //! merely resting on each other hang on soft contacts of their own and do not.
 
+use crate::pipeline::union_find::UnionFind;
 use crate::solver::body_state::BodyState;
 
 /// Per solver body, the mass of its jointed group; empty when the step joins no bodies
@@ -25,32 +26,19 @@ impl JointedMasses {
         if links.peek().is_none() {
             return Self::default();
         }
-        // Union–find with path halving.
-        let mut parent: Vec<u32> = (0..states.len() as u32).collect();
-        fn root(parent: &mut [u32], mut i: u32) -> u32 {
-            while parent[i as usize] != i {
-                let up = parent[parent[i as usize] as usize];
-                parent[i as usize] = up;
-                i = up;
-            }
-            i
-        }
+        let mut groups = UnionFind::new(states.len());
         for (a, b) in links {
             if a as usize >= states.len() || b as usize >= states.len() {
                 continue;
             }
-            let (ra, rb) = (root(&mut parent, a), root(&mut parent, b));
-            if ra != rb {
-                parent[ra as usize] = rb;
-            }
+            groups.union(a, b);
         }
         let mut total = vec![0.0f32; states.len()];
         for (i, st) in states.iter().enumerate() {
-            let r = root(&mut parent, i as u32);
-            total[r as usize] += mass_of(st);
+            total[groups.find(i as u32) as usize] += mass_of(st);
         }
         let group = (0..states.len() as u32)
-            .map(|i| total[root(&mut parent, i) as usize])
+            .map(|i| total[groups.find(i) as usize])
             .collect();
         Self { group }
     }

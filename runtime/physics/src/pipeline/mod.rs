@@ -9,4 +9,5 @@ mod narrowphase_stage;
 mod prestep;
 mod sleep_stage;
 mod solve_stage;
+mod union_find;
 mod writeback_stage;

@@ -5,15 +5,7 @@ use glam::Vec3;
 
 use crate::body_type::BodyType;
 use crate::physics_world::PhysicsWorld;
-
-fn find(parent: &mut [u32], mut x: u32) -> u32 {
-    while parent[x as usize] != x {
-        let p = parent[x as usize];
-        parent[x as usize] = parent[p as usize];
-        x = p;
-    }
-    x
-}
+use crate::pipeline::union_find::UnionFind;
 
 impl PhysicsWorld {
     pub(crate) fn sleep_stage(&mut self) {
@@ -22,7 +14,7 @@ impl PhysicsWorld {
         if !s.sleep_enabled || n <= 1 {
             return;
         }
-        let mut parent: Vec<u32> = (0..n as u32).collect();
+        let mut islands = UnionFind::new(n);
         for c in &self.manifold_refs {
             let (a, b) = (c.body_a, c.body_b);
             if a == 0 || b == 0 {
@@ -37,20 +29,14 @@ impl PhysicsWorld {
             {
                 continue;
             }
-            let (ra, rb) = (find(&mut parent, a), find(&mut parent, b));
-            if ra != rb {
-                parent[ra.max(rb) as usize] = ra.min(rb);
-            }
+            islands.union(a, b);
         }
         // Jointed dynamic bodies sleep and wake together.
         for c in &self.joint_constraints {
             if c.writes != 3 {
                 continue;
             }
-            let (ra, rb) = (find(&mut parent, c.body_a), find(&mut parent, c.body_b));
-            if ra != rb {
-                parent[ra.max(rb) as usize] = ra.min(rb);
-            }
+            islands.union(c.body_a, c.body_b);
         }
         // Update timers; island minimum.
         let mut island_min = vec![f32::MAX; n];
@@ -65,12 +51,12 @@ impl PhysicsWorld {
                 && b.kinematic_target.is_none()
                 && !b.quarantined;
             b.sleep_timer = if resting { b.sleep_timer + s.dt } else { 0.0 };
-            let r = find(&mut parent, k as u32) as usize;
+            let r = islands.find(k as u32) as usize;
             island_min[r] = island_min[r].min(b.sleep_timer);
         }
         let mut island_ids: std::collections::HashMap<u32, u32> = std::collections::HashMap::new();
         for k in 1..n {
-            let r = find(&mut parent, k as u32);
+            let r = islands.find(k as u32);
             if island_min[r as usize] < s.time_to_sleep {
                 continue;
             }
