@@ -89,9 +89,10 @@ pub fn free_rotation_step(inertia: Mat3, omega0: Vec3, h: f32) -> FreeRotationSt
     }
     let theta = h * x;
     let half = 0.5 * theta;
+    let rotation = Quat::from_xyzw(half.x, half.y, half.z, 1.0).normalize();
     FreeRotationStep {
         omega: 2.0 * x - omega0,
-        rotation: Quat::from_xyzw(half.x, half.y, half.z, 1.0).normalize(),
+        rotation,
         rotation_vector: theta,
         converged,
     }
