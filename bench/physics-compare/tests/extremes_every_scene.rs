@@ -38,6 +38,7 @@ const BOUNDS: &[(&str, f64, f64)] = &[
     ("rotation_energy", 1e-4, 2e-4),
     ("wide_wall_ccd", 0.0, 0.0),
     ("restitution_ladder", 0.03, 1e-4),
+    ("elastic_crowd", 0.05, 2e-3),
     ("mass_ratio_ladder", 0.3, 0.005),
     ("size_ladder", 1.0, 0.05),
     // At 30 Hz × 1 the frictionless stacks slide apart (a known failure at coarse steps).

@@ -14,6 +14,7 @@ pub mod bounce;
 pub mod bridge;
 pub mod chain;
 pub mod degenerate_hulls;
+pub mod elastic_crowd;
 pub mod far_origin;
 pub mod free_fall;
 pub mod frictionless_stacks;
@@ -107,6 +108,7 @@ pub fn all() -> Vec<&'static dyn Scene> {
         &rotation_energy::RotationEnergy,
         &wide_wall_ccd::WideWallCcd,
         &restitution_ladder::RestitutionLadder,
+        &elastic_crowd::ElasticCrowd,
         &mass_ratio_ladder::MassRatioLadder,
         &size_ladder::SizeLadder,
         &frictionless_stacks::FrictionlessStacks,

@@ -26,6 +26,9 @@ pub struct ContactPoint {
     pub(crate) twist_impulse: f32,
     /// Largest normal impulse applied in one substep during the last step, N·s.
     pub max_normal_impulse: f32,
+    /// Restitution bounced or held the point in the last step: its impulse was an impact's,
+    /// not a load's (not warm started).
+    pub(crate) impact: bool,
     /// Feature id (for matching), `u32::MAX` when unknown.
     pub id: u32,
     /// Offset from A's centre of mass, world axes, at generation (solver use).

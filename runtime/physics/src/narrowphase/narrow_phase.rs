@@ -447,6 +447,7 @@ impl NarrowPhase {
                     }
                     if let Some((_, k)) = best {
                         cp.normal_impulse = self.old[k].normal_impulse;
+                        cp.impact = self.old[k].impact;
                         cp.tangent_impulse = self.old[k].tangent_impulse;
                         cp.twist_impulse = self.old[k].twist_impulse;
                     }
@@ -514,6 +515,7 @@ impl PointFrame {
             tangent_impulse: Vec3::ZERO,
             twist_impulse: 0.0,
             max_normal_impulse: 0.0,
+            impact: false,
             id,
             anchor_a: point - self.com_a,
             anchor_b: point - self.com_b,
@@ -538,12 +540,17 @@ fn ball_ball(
         pair.min_separation = f32::MAX;
         return;
     };
-    let (normal_impulse, tangent_impulse, twist_impulse) = pair
+    let (normal_impulse, impact, tangent_impulse, twist_impulse) = pair
         .manifolds
         .first()
         .and_then(|m| m.points.first())
-        .map_or((0.0, Vec3::ZERO, 0.0), |p| {
-            (p.normal_impulse, p.tangent_impulse, p.twist_impulse)
+        .map_or((0.0, false, Vec3::ZERO, 0.0), |p| {
+            (
+                p.normal_impulse,
+                p.impact,
+                p.tangent_impulse,
+                p.twist_impulse,
+            )
         });
     pair.manifolds.resize_with(1, ContactManifold::default);
     let m = &mut pair.manifolds[0];
@@ -552,6 +559,7 @@ fn ball_ball(
     m.points.clear();
     m.points.push(ContactPoint {
         normal_impulse,
+        impact,
         tangent_impulse,
         twist_impulse,
         ..f.point(point, separation, 0)

@@ -7,6 +7,7 @@ pub mod joint_stage;
 mod jointed_masses;
 mod narrowphase_stage;
 mod prestep;
+mod resting_accelerations;
 mod sleep_stage;
 mod solve_stage;
 mod union_find;

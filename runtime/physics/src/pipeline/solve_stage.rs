@@ -2,6 +2,7 @@
 
 use glam::{Vec3, Vec3A};
 
+use super::resting_accelerations::RestingAccelerations;
 use crate::body_type::BodyType;
 use crate::locked_axes::LockedAxes;
 use crate::narrowphase::narrow_phase::is_active;
@@ -12,11 +13,12 @@ use crate::physics_world::SolverSlot;
 use crate::pipeline::jointed_masses::JointedMasses;
 use crate::rigid_body::mask_mat;
 use crate::solver::body_state::BodyState;
+use crate::solver::contact_batch::Jitter;
 use crate::solver::contact_constraint::{
     prepare, ContactConstraint, FrictionPart, ManifoldRef, NormalBlock, PreparedManifold,
 };
 use crate::solver::noise::matrix_without_noise;
-use crate::solver::restitution::bounce_velocity;
+use crate::solver::restitution::{bounce_velocity, held_velocity};
 use crate::solver::softness::LOAD_MEMORY_HALF_LIFE;
 use crate::solver::solve::{solve_substeps, SolveParams};
 use crate::solver::solver_body::SolverBody;
@@ -214,6 +216,7 @@ impl PhysicsWorld {
                     writes: u8::from(sa.dynamic) | u8::from(sb.dynamic) << 1,
                     count,
                     angular: sa.rotates || sb.rotates,
+                    rests: 0,
                 });
             }
         }
@@ -237,6 +240,18 @@ impl PhysicsWorld {
                 .map(|j| (j.body_a, j.body_b)),
             mass_of,
         );
+        let resting = if bouncy {
+            RestingAccelerations::new(
+                &mut self.manifold_refs,
+                &self.narrowphase.pairs,
+                &self.solver_bodies,
+                &self.solver_states,
+                s.linear_slop,
+                s.dt,
+            )
+        } else {
+            RestingAccelerations::default()
+        };
         let (pairs, bodies, states) = (
             &self.narrowphase.pairs,
             &self.solver_bodies,
@@ -286,7 +301,8 @@ impl PhysicsWorld {
                     tangent += p.tangent_impulse;
                     twist += p.twist_impulse;
                     points[k].base_separation = p.separation;
-                    points[k].normal_impulse = p.normal_impulse;
+                    // An impact's impulse is not a load (see `LaneResult::impact`).
+                    points[k].normal_impulse = if p.impact { 0.0 } else { p.normal_impulse };
                 }
                 c.friction.tangent_impulse = [tangent.dot(t1), tangent.dot(t2)];
                 c.friction.twist_impulse = twist;
@@ -301,13 +317,12 @@ impl PhysicsWorld {
                     s.static_friction_speed,
                 );
                 if pair.restitution > 0.0 {
-                    // Relative normal acceleration (gravity, forces) for the impact speed.
-                    let accel = n.dot(Vec3::from(
-                        bodies[r.body_b as usize].lin_acc - bodies[r.body_a as usize].lin_acc,
-                    ));
+                    // Relative normal acceleration (gravity, forces, supports) for the impact
+                    // speed.
+                    let accel = n.dot(resting.get(r, 1) - resting.get(r, 0));
                     c.bounce_accel = accel;
                     for cp in &mut points[..count] {
-                        cp.bounce_velocity = bounce_velocity(
+                        cp.restitution_velocity = bounce_velocity(
                             cp.relative_velocity,
                             cp.base_separation,
                             accel,
@@ -316,7 +331,15 @@ impl PhysicsWorld {
                             pair.restitution,
                             s.restitution_threshold,
                         )
-                        .unwrap_or(f32::NAN);
+                        .unwrap_or_else(|| {
+                            held_velocity(
+                                cp.relative_velocity,
+                                cp.base_separation,
+                                accel,
+                                s.dt,
+                                pair.restitution,
+                            )
+                        });
                     }
                 }
                 // Static contacts are twice as stiff (Box2D v3); both stiffen with load, and
@@ -422,6 +445,10 @@ impl PhysicsWorld {
             restitution: bouncy,
             max_linear_speed: s.max_linear_speed,
             max_angular_speed: s.max_angular_speed,
+            jitter: Jitter {
+                dt: s.dt,
+                gravity: s.gravity.length(),
+            },
         };
         self.output.counters.gyro_not_converged = solve_substeps(
             &mut self.solver_bodies,
@@ -437,38 +464,45 @@ impl PhysicsWorld {
         // Store impulses for warm starting and events; a manifold's friction is shared among
         // its points in proportion to their normal impulses.
         let (refs, pairs) = (&self.manifold_refs, &mut self.narrowphase.pairs);
-        self.contact_batches.for_each_result(|ri, result| {
-            let c = &refs[ri as usize];
-            let pair = &mut pairs[c.pair as usize];
-            let m = &mut pair.manifolds[c.manifold as usize];
-            let count = usize::from(c.count);
-            let normal = &result.normal_impulse[..count];
-            let [t1, t2] = result.tangent_impulse;
-            let tangent = Vec3::from(result.tangent[0] * t1 + result.tangent[1] * t2);
-            let total: f32 = normal.iter().sum();
-            for (k, p) in m.points.iter_mut().take(count).enumerate() {
-                let share = if total > 0.0 {
-                    normal[k] / total
+        self.contact_batches
+            .for_each_result(params.jitter, |ri, result| {
+                let c = &refs[ri as usize];
+                let pair = &mut pairs[c.pair as usize];
+                let m = &mut pair.manifolds[c.manifold as usize];
+                let count = usize::from(c.count);
+                let normal = &result.normal_impulse[..count];
+                let [t1, t2] = result.tangent_impulse;
+                let tangent = Vec3::from(result.tangent[0] * t1 + result.tangent[1] * t2);
+                let total: f32 = normal.iter().sum();
+                let load: f32 = normal
+                    .iter()
+                    .zip(result.impact)
+                    .filter_map(|(&j, impact)| (!impact).then_some(j))
+                    .sum();
+                for (k, p) in m.points.iter_mut().take(count).enumerate() {
+                    let share = if total > 0.0 {
+                        normal[k] / total
+                    } else {
+                        1.0 / count as f32
+                    };
+                    p.normal_impulse = normal[k];
+                    p.tangent_impulse = tangent * share;
+                    p.twist_impulse = result.twist_impulse * share;
+                    p.max_normal_impulse = result.max_normal_impulse[k];
+                    p.impact = result.impact[k];
+                }
+                // Load memory decays once per step (with the pair's first manifold), then takes
+                // this step's load (see `LOAD_MEMORY_HALF_LIFE`).
+                let kept = if c.manifold == 0 {
+                    pair.load_memory * decay
                 } else {
-                    1.0 / count as f32
+                    pair.load_memory
                 };
-                p.normal_impulse = normal[k];
-                p.tangent_impulse = tangent * share;
-                p.twist_impulse = result.twist_impulse * share;
-                p.max_normal_impulse = result.max_normal_impulse[k];
-            }
-            // Load memory decays once per step (with the pair's first manifold), then takes
-            // this step's load (see `LOAD_MEMORY_HALF_LIFE`).
-            let kept = if c.manifold == 0 {
-                pair.load_memory * decay
-            } else {
-                pair.load_memory
-            };
-            pair.load_memory = kept.max(total);
-            // Every non-empty manifold of a solved pair is solved: the pair's flag is exact.
-            let pushing = m.points.iter().any(|p| p.max_normal_impulse > 0.0);
-            pair.solved_pushing = Some(pair.solved_pushing == Some(true) || pushing);
-        });
+                pair.load_memory = kept.max(load);
+                // Every non-empty manifold of a solved pair is solved: the pair's flag is exact.
+                let pushing = m.points.iter().any(|p| p.max_normal_impulse > 0.0);
+                pair.solved_pushing = Some(pair.solved_pushing == Some(true) || pushing);
+            });
     }
 }
 

@@ -11,8 +11,8 @@
 
 use super::body_state::BodyState;
 use super::contact_batch::{
-    ContactBatch, FaceBatch, LaneResult, Levers, LinearFaceBatch, LinearPointBatch, ManifoldRows,
-    Pass, PointBatch,
+    ContactBatch, FaceBatch, Jitter, LaneResult, Levers, LinearFaceBatch, LinearPointBatch,
+    ManifoldRows, Pass, PointBatch,
 };
 use super::contact_constraint::{ManifoldRef, PreparedManifold};
 use super::lanes::LANES;
@@ -209,32 +209,46 @@ impl ContactBatches {
     }
 
     /// One restitution pass after the substeps, batch by batch (see
-    /// [`ContactBatch::apply_restitution`](super::contact_batch::ContactBatch::apply_restitution)).
-    pub(crate) fn apply_restitution(&mut self, states: &mut [BodyState], h: f32) {
-        self.four
-            .iter_mut()
-            .for_each(|b| b.apply_restitution(states, h));
-        self.one
-            .iter_mut()
-            .for_each(|b| b.apply_restitution(states, h));
-        self.four_linear
-            .iter_mut()
-            .for_each(|b| b.apply_restitution(states, h));
-        self.one_linear
-            .iter_mut()
-            .for_each(|b| b.apply_restitution(states, h));
+    /// [`ContactBatch::apply_restitution`](super::contact_batch::ContactBatch::apply_restitution));
+    /// returns the largest change of a point's normal velocity it made, m/s.
+    pub(crate) fn apply_restitution(
+        &mut self,
+        states: &mut [BodyState],
+        struck: &mut [bool],
+        h: f32,
+        jitter: Jitter,
+    ) -> f32 {
+        let mut change = 0.0f32;
+        for b in &mut self.four {
+            change = change.max(b.apply_restitution(states, struck, h, jitter));
+        }
+        for b in &mut self.one {
+            change = change.max(b.apply_restitution(states, struck, h, jitter));
+        }
+        for b in &mut self.four_linear {
+            change = change.max(b.apply_restitution(states, struck, h, jitter));
+        }
+        for b in &mut self.one_linear {
+            change = change.max(b.apply_restitution(states, struck, h, jitter));
+        }
+        change
     }
 
-    /// Calls `f(manifold index, impulses)` for every manifold, batch by batch.
-    pub(crate) fn for_each_result(&self, mut f: impl FnMut(u32, &LaneResult)) {
-        self.four.iter().for_each(|b| b.for_each_result(&mut f));
-        self.one.iter().for_each(|b| b.for_each_result(&mut f));
+    /// Calls `f(manifold index, impulses)` for every manifold, batch by batch (see
+    /// [`LaneResult::impact`] for `jitter`).
+    pub(crate) fn for_each_result(&self, jitter: Jitter, mut f: impl FnMut(u32, &LaneResult)) {
+        self.four
+            .iter()
+            .for_each(|b| b.for_each_result(jitter, &mut f));
+        self.one
+            .iter()
+            .for_each(|b| b.for_each_result(jitter, &mut f));
         self.four_linear
             .iter()
-            .for_each(|b| b.for_each_result(&mut f));
+            .for_each(|b| b.for_each_result(jitter, &mut f));
         self.one_linear
             .iter()
-            .for_each(|b| b.for_each_result(&mut f));
+            .for_each(|b| b.for_each_result(jitter, &mut f));
     }
 }
 
@@ -258,6 +272,7 @@ mod tests {
             count,
             // Bodies with an index divisible by 5 cannot rotate.
             angular: !body_a.is_multiple_of(5) || !body_b.is_multiple_of(5),
+            rests: 0,
         }
     }
 

@@ -31,9 +31,11 @@ pub(crate) struct ConstraintPoint {
     pub inv_normal_mass: f32,
     /// Normal relative velocity at step start (pre-solve), m/s.
     pub relative_velocity: f32,
-    /// Rebound speed restitution gives this point after the substeps, m/s (see
-    /// [`super::restitution::bounce_velocity`]); NaN where it does not bounce.
-    pub bounce_velocity: f32,
+    /// Restitution's target for this point after the substeps, m/s: a rebound speed > 0
+    /// where it bounces ([`super::restitution::bounce_velocity`]), else the relative normal
+    /// velocity it is held to, ≤ 0 ([`super::restitution::held_velocity`]); NaN in a
+    /// manifold without restitution.
+    pub restitution_velocity: f32,
     /// Distance from the manifold centre in the contact plane (twist friction lever), m.
     pub twist_lever: f32,
     /// Angular Jacobians `r × n` for A and B (fixed for the step).
@@ -113,6 +115,9 @@ pub(crate) struct ManifoldRef {
     pub count: u8,
     /// One of the bodies can rotate (else the manifold goes to a linear batch).
     pub angular: bool,
+    /// Bit 0 (1): body A (B) rests on the other body of this manifold (see
+    /// `RestingAccelerations`).
+    pub rests: u8,
 }
 
 /// A constraint and its points, prepared for one step (lives on the stack while a batch
@@ -234,7 +239,7 @@ pub(crate) fn prepare(
         cp.inv_normal_mass = k;
         cp.normal_mass = if k > 0.0 { 1.0 / k } else { 0.0 };
         cp.relative_velocity = dv.dot(n);
-        cp.bounce_velocity = f32::NAN;
+        cp.restitution_velocity = f32::NAN;
         let off = ra - ca;
         cp.twist_lever = (off - n * off.dot(n)).length();
         cp.max_normal_impulse = 0.0;

@@ -21,6 +21,18 @@
 //!
 //! With these a ball with `e = 1` returns to its drop height bounce after bounce; the time it
 //! rests on the surface inside the impact step only delays it.
+//!
+//! **Simultaneous impacts.** Over one step the contact impulses `Λᵢ` change the kinetic
+//! energy by `Σ ½·Λᵢ·(vᵢ⁻ + vᵢ⁺)` (relative normal velocities before and after), so the
+//! step keeps the energy of `e = 1` impacts when every point that pushed leaves at
+//! `v⁺ = −v⁻`. The restitution passes therefore drive every loaded point of a bouncy
+//! manifold: one that bounces to its rebound ([`bounce_velocity`]), and one that does not
+//! (resting, or pushed by another impact in the same step) to [`held_velocity`], not merely
+//! apart. Driven only where they bounced, a ball landing on one that lay on the floor pushed
+//! the lower one into it and kept half the impact; 50 elastic balls in a box lost 24 % of
+//! their energy over 10,000 steps under gravity at 60 Hz (now 0.4 %). The passes run until
+//! no point's velocity changes by more than a tolerance (see `solve.rs`). Their impulses
+//! are an impact's, not a load's: the next step does not warm start them.
 
 /// Rebound speed, m/s, that restitution `e` gives a point whose relative normal velocity was
 /// `v0` (m/s, negative approaching) at step start, at separation `s0` (m), under relative
@@ -62,6 +74,24 @@ pub fn bounce_velocity(
         return None;
     };
     (impact > threshold.max(accel.abs() * h)).then_some(e * impact)
+}
+
+/// Relative normal velocity, m/s, that restitution `e` holds a loaded point to at least
+/// when it does not bounce ([`bounce_velocity`] is `None`), from its relative normal
+/// velocity `v0` (m/s) and separation `s0` (m) at step start, under relative normal
+/// acceleration `accel` (m/s²) over a step of `dt`: `−e·v0` when the bodies were separating
+/// (they may close again at that speed, no faster), else 0 (they do not approach). Bodies
+/// apart at step start may also close as fast as `accel` brings them by the step's end:
+/// braked in the air by the speculative row, a ball falling the last 1.6 mm onto the floor
+/// was otherwise held up by it and lost a third of its next rebound.
+#[must_use]
+pub fn held_velocity(v0: f32, s0: f32, accel: f32, dt: f32, e: f32) -> f32 {
+    let held = -e * v0.max(0.0);
+    if s0 > 0.0 {
+        held.min(v0 + accel * dt)
+    } else {
+        held
+    }
 }
 
 /// The solver velocity, m/s, for a rebound of `speed` (from [`bounce_velocity`]) leaving
@@ -112,6 +142,19 @@ mod tests {
         );
         assert_eq!(bounce_velocity(0.5, 0.1, 0.0, 0.01, 0.04, 1.0, 0.0), None);
         assert_eq!(bounce_velocity(-5.0, 0.0, 0.0, 0.01, 0.04, 0.0, 0.0), None);
+    }
+
+    #[test]
+    fn held_points_do_not_approach_unless_they_separated_or_were_apart() {
+        let (g, dt) = (9.81f32, 1.0 / 60.0);
+        // Touching and approaching or at rest: held apart.
+        assert_eq!(held_velocity(-0.3, 0.0, -g, dt, 1.0), 0.0);
+        assert_eq!(held_velocity(0.0, -0.001, -g, dt, 0.5), 0.0);
+        // Touching and separating at 0.4 m/s: they may close again at e·0.4.
+        assert_eq!(held_velocity(0.4, 0.0, -g, dt, 0.5), -0.2);
+        // 1.6 mm apart, rising at 3 cm/s: gravity closes them at up to 13 cm/s by the end.
+        let v = held_velocity(0.03, 0.0016, -g, dt, 0.8);
+        assert!((v - (0.03 - g * dt)).abs() < 1e-6, "{v}");
     }
 
     #[test]

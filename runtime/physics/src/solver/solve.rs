@@ -5,19 +5,23 @@ use glam::{Quat, Vec3, Vec3A};
 
 use super::batching::ContactBatches;
 use super::body_state::BodyState;
-use super::contact_batch::Pass;
+use super::contact_batch::{Jitter, Pass};
 use super::free_rotation::free_rotation_step;
 use super::joint_constraint::{JointConstraint, Rows};
 use super::solver_body::{SolverBody, CAPPED_ANGULAR, CAPPED_LINEAR};
 use crate::pose::unit_rotation;
 
-/// Restitution passes after the substeps: the first gives the impacts the substeps absorbed
-/// their rebound, the others resolve the collisions those rebounds cause in the same step
-/// (see `ContactBatch::apply_restitution`). Bounded `[1, 16]`: each pass is one more
-/// collision down a chain of touching bodies (Newton's cradle needs one per ball); fewer
-/// passes leave such chains inelastic (50 elastic balls in a box lost 4 % of their energy
-/// per 10,000 steps at 4 passes), more cost a pass over the bouncing contacts each.
-pub const RESTITUTION_PASSES: u32 = 4;
+/// Most restitution passes after the substeps (see `ContactBatch::apply_restitution`).
+/// Each pass is one more Gauss–Seidel sweep towards the simultaneous rebound of every
+/// bouncing and held point; they stop once no pass changes a point's normal velocity by more
+/// than [`RESTITUTION_TOLERANCE`]. 50 elastic balls in a box need 1.5–5 passes a step on
+/// average and reach this cap in fewer than one step in 5,000; at a fixed 4 passes they lost
+/// 20 % of their energy over 10,000 steps under gravity, at 16 still 1.5 %.
+pub const MAX_RESTITUTION_PASSES: u32 = 32;
+
+/// Largest change of a point's normal velocity, m/s, of a restitution pass after which the
+/// passes stop.
+pub const RESTITUTION_TOLERANCE: f32 = 1e-4;
 
 /// Parameters of one solver run (derived from `PhysicsSettings`).
 #[derive(Clone, Copy, Debug)]
@@ -31,6 +35,8 @@ pub(crate) struct SolveParams {
     pub restitution: bool,
     pub max_linear_speed: f32,
     pub max_angular_speed: f32,
+    /// Below it a restitution impulse is a resting contact's, not an impact's.
+    pub jitter: Jitter,
 }
 
 /// Runs all substeps over awake bodies, their joints and their contact batches (joints
@@ -88,8 +94,12 @@ pub(crate) fn solve_substeps(
         }
     }
     if p.restitution {
-        for _ in 0..RESTITUTION_PASSES {
-            batches.apply_restitution(states, h);
+        let mut struck = vec![false; states.len()];
+        for _ in 0..MAX_RESTITUTION_PASSES {
+            if batches.apply_restitution(states, &mut struck, h, p.jitter) <= RESTITUTION_TOLERANCE
+            {
+                break;
+            }
         }
     }
     not_converged
