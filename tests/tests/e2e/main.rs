@@ -21,6 +21,7 @@ mod loading;
 mod made_assets;
 mod native_failures;
 mod physics;
+mod physics_presets_cli;
 mod physics_scenes;
 mod registry;
 mod reload;
