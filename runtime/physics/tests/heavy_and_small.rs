@@ -214,3 +214,59 @@ fn bodies_moving_past_the_precise_range_are_named_once() {
         assert!(w.step().far_bodies.is_empty(), "reported twice");
     }
 }
+
+#[test]
+fn an_impact_is_not_reported_as_an_overloaded_contact() {
+    // Bullets stopped by a 1 cm wall (CCD, no gravity, 300 and 1000 m/s) and balls thrown
+    // down onto the ground at 20 m/s: the impact's impulse is no load the contact settles
+    // under, and nothing rests on anything afterwards but a ball's own weight. Counted as
+    // load, each impact was named overloaded ("carries 13387× its weight, no preset holds
+    // it").
+    for preset in PhysicsPreset::ALL {
+        let s = settings(preset);
+        let mut w = PhysicsWorld::new(s);
+        let wall = w.insert_body(RigidBodyDesc::fixed().translation(Vec3::X * 10.0));
+        w.insert_collider(ColliderDesc::cuboid(0.005, 50.0, 50.0), wall);
+        let ground = w.insert_body(RigidBodyDesc::fixed());
+        w.insert_collider(
+            ColliderDesc::cuboid(5.0, 0.5, 5.0).translation(Vec3::new(-20.0, -0.5, 0.0)),
+            ground,
+        );
+        for (i, speed) in [300.0f32, 1000.0].into_iter().enumerate() {
+            let y = i as f32 * 2.0;
+            let bullet = w.insert_body(
+                RigidBodyDesc::dynamic()
+                    .translation(Vec3::new(0.0, y, 0.0))
+                    .linvel(Vec3::X * speed)
+                    .gravity_scale(0.0)
+                    .ccd_enabled(true),
+            );
+            w.insert_collider(ColliderDesc::sphere(0.05), bullet);
+            let slug = w.insert_body(
+                RigidBodyDesc::dynamic()
+                    .translation(Vec3::new(0.0, y, 1.0))
+                    .linvel(Vec3::X * speed)
+                    .gravity_scale(0.0)
+                    .ccd_enabled(true),
+            );
+            w.insert_collider(ColliderDesc::cuboid(0.05, 0.05, 0.05), slug);
+        }
+        for (i, r) in [0.05f32, 0.5].into_iter().enumerate() {
+            let ball = w.insert_body(
+                RigidBodyDesc::dynamic()
+                    .translation(Vec3::new(-22.0 + 3.0 * i as f32, 2.0, 0.0))
+                    .linvel(Vec3::Y * -20.0)
+                    .ccd_enabled(true),
+            );
+            w.insert_collider(ColliderDesc::sphere(r), ball);
+        }
+        let mut reports = Vec::new();
+        for _ in 0..(1.0 / s.dt) as usize {
+            reports.extend(w.step().overloaded_contacts.iter().copied());
+        }
+        assert!(
+            reports.is_empty(),
+            "{preset}: impacts reported as overloaded contacts: {reports:?}"
+        );
+    }
+}

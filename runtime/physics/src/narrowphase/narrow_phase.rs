@@ -74,6 +74,9 @@ pub struct NarrowPhase {
     /// have contacts or had them, in order: the later stages visit these instead of every
     /// pair (see `mark_updated`).
     pub(crate) updated_pairs: Vec<u32>,
+    /// Calls of [`NarrowPhase::update`] so far (wrapping), one per step: lets a pair tell
+    /// whether something it noted happened in the step just before.
+    pub(crate) updates: u32,
 }
 
 fn key(a: ColliderHandle, b: ColliderHandle) -> u64 {
@@ -151,6 +154,7 @@ impl NarrowPhase {
             ball_ball: false,
             size,
             overload_reported: false,
+            overloaded_at: None,
             load_memory: 0.0,
         });
         true
@@ -246,6 +250,7 @@ impl NarrowPhase {
         active: &[bool],
         awake: &[NarrowBody],
     ) {
+        self.updates = self.updates.wrapping_add(1);
         let reuse_cos_half = (0.5 * MANIFOLD_REUSE_MAX_ANGLE).cos();
         let hold_cos = FRICTIONLESS_NORMAL_HOLD_ANGLE.cos();
         self.updated_pairs.clear();

@@ -31,13 +31,17 @@ pub const OVERLOAD_DEPTH_FACTOR: f32 = 2.0;
 
 impl PhysicsWorld {
     /// Names each overloaded pair once in the step output, with the cheapest preset whose
-    /// step would hold it (`needed`, Hz, within that preset's stiffness cap).
+    /// step would hold it (`needed`, Hz, within that preset's stiffness cap), once it has
+    /// been overloaded in two steps running (an impact's impulse loads one step only).
     fn report_overloads(&mut self, overloads: &[(u32, f32, f32, f32, f32)]) {
+        let now = self.narrowphase.updates;
         for &(pi, depth, budget, needed, load_ratio) in overloads {
             let Some(pair) = self.narrowphase.pairs.get_mut(pi as usize) else {
                 continue;
             };
-            if pair.overload_reported {
+            let sustained = pair.overloaded_at == Some(now.wrapping_sub(1));
+            pair.overloaded_at = Some(now);
+            if pair.overload_reported || !sustained {
                 continue;
             }
             pair.overload_reported = true;
@@ -391,13 +395,17 @@ impl PhysicsWorld {
                     // The mass it carries, in units of its own effective mass.
                     let stiffening = (used / base_hz).powi(2);
                     let carried = if g > 0.0 { load_accel / g } else { stiffening };
-                    // Deeper than the budget allows even at the stiffest contact: named once.
+                    // Deeper than the budget allows even at the stiffest contact, under the
+                    // load of this step (not the remembered one, which an impact fills for
+                    // several steps): a candidate, named once it is one two steps running.
                     let omega = 2.0 * std::f32::consts::PI * used;
-                    let depth = load_accel / (omega * omega);
+                    let own_accel = (load / (mass * h)).max(weight / mass);
+                    let depth = own_accel / (omega * omega);
                     if depth > OVERLOAD_DEPTH_FACTOR * budget
-                        && remembered > 0.0
+                        && load > 0.0
                         && !pair.overload_reported
                     {
+                        let carried = if g > 0.0 { own_accel / g } else { carried };
                         overloads.push((r.pair, depth, budget, needed, carried));
                     }
                     if size_hz > load_hz {
