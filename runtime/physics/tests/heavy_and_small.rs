@@ -234,22 +234,20 @@ fn an_impact_is_not_reported_as_an_overloaded_contact() {
         );
         for (i, speed) in [300.0f32, 1000.0].into_iter().enumerate() {
             let y = i as f32 * 2.0;
-            let bullet = w.insert_body(
-                RigidBodyDesc::dynamic()
-                    .translation(Vec3::new(0.0, y, 0.0))
-                    .linvel(Vec3::X * speed)
-                    .gravity_scale(0.0)
-                    .ccd_enabled(true),
-            );
-            w.insert_collider(ColliderDesc::sphere(0.05), bullet);
-            let slug = w.insert_body(
-                RigidBodyDesc::dynamic()
-                    .translation(Vec3::new(0.0, y, 1.0))
-                    .linvel(Vec3::X * speed)
-                    .gravity_scale(0.0)
-                    .ccd_enabled(true),
-            );
-            w.insert_collider(ColliderDesc::cuboid(0.05, 0.05, 0.05), slug);
+            let shapes = [
+                ColliderDesc::sphere(0.05),
+                ColliderDesc::cuboid(0.05, 0.05, 0.05),
+            ];
+            for (z, shape) in shapes.into_iter().enumerate() {
+                let bullet = w.insert_body(
+                    RigidBodyDesc::dynamic()
+                        .translation(Vec3::new(0.0, y, z as f32))
+                        .linvel(Vec3::X * speed)
+                        .gravity_scale(0.0)
+                        .ccd_enabled(true),
+                );
+                w.insert_collider(shape, bullet);
+            }
         }
         for (i, r) in [0.05f32, 0.5].into_iter().enumerate() {
             let ball = w.insert_body(

@@ -3,6 +3,7 @@
 //! checked against analytic answers: what a user who writes a scene and picks a preset gets.
 
 use onyx_plugin_api::glam::Vec3;
+use onyx_tests::cli::{assert_exit, onyx, stderr};
 
 /// The three presets, with their step rate (Hz) and substeps (`PhysicsPreset::apply`).
 const PRESETS: [(&str, f32, f32); 3] = [
@@ -21,21 +22,21 @@ fn run(scene: &str, preset: &str, frames: u32) -> (Vec<Body>, String) {
     let path = dir.path().join("scene.ron");
     let dump = dir.path().join("state.json");
     std::fs::write(&path, scene).unwrap();
-    let out = std::process::Command::new(onyx_tests::onyx_binary())
-        .args(["run", "--headless", "--physics", preset, "--frames"])
-        .arg(frames.to_string())
-        .arg("--scene")
-        .arg(&path)
-        .arg("--dump-state")
-        .arg(&dump)
-        .env("RUST_LOG", "warn")
-        .output()
-        .unwrap();
-    assert!(
-        out.status.success(),
-        "{preset}: {}",
-        String::from_utf8_lossy(&out.stderr)
-    );
+    let frames = frames.to_string();
+    let (scene_arg, dump_arg) = (path.to_str().unwrap(), dump.to_str().unwrap());
+    let out = onyx(&[
+        "run",
+        "--headless",
+        "--physics",
+        preset,
+        "--frames",
+        &frames,
+        "--scene",
+        scene_arg,
+        "--dump-state",
+        dump_arg,
+    ]);
+    assert_exit(&out, 0);
     let state: serde_json::Value =
         serde_json::from_str(&std::fs::read_to_string(&dump).unwrap()).unwrap();
     let vec = |v: &serde_json::Value| {
@@ -55,7 +56,7 @@ fn run(scene: &str, preset: &str, frames: u32) -> (Vec<Body>, String) {
             )
         })
         .collect();
-    (bodies, String::from_utf8_lossy(&out.stderr).into_owned())
+    (bodies, stderr(&out))
 }
 
 fn body<'a>(bodies: &'a [Body], name: &str) -> &'a Body {
