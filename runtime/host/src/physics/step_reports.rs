@@ -84,10 +84,24 @@ fn overload_sentence(c: &OverloadedContact, a: &Named, b: &Named) -> String {
         None => "no preset holds it: more substeps, a lighter load or a larger body do".into(),
     };
     format!(
-        "physics: bodies {a}/{b}{ratio}: carries {:.0}× its weight, sinks ≈{:.3} m \
-         (budget {:.3} m); {cure}",
-        c.load_ratio, c.expected_depth, c.allowed_depth
+        "physics: bodies {a}/{b}{ratio}: carries {:.0}× its weight, sinks ≈{} (budget {}); \
+         {cure}",
+        c.load_ratio,
+        length(c.expected_depth),
+        length(c.allowed_depth)
     )
+}
+
+/// A depth in the unit that shows its digits: a 1 mm ball's budget is 20 µm, not "0.000 m".
+fn length(metres: f32) -> String {
+    let m = metres.abs();
+    if m >= 1.0 {
+        format!("{metres:.2} m")
+    } else if m >= 1e-3 {
+        format!("{:.1} mm", metres * 1e3)
+    } else {
+        format!("{:.1} µm", metres * 1e6)
+    }
 }
 
 fn speed_cap_sentence(hit: &SpeedCapHit, body: &Named) -> String {
@@ -159,7 +173,7 @@ mod tests {
         assert!(lines[0].contains("mass ratio 1000:1"), "{}", lines[0]);
         assert!(lines[0].contains("carries 999× its weight"), "{}", lines[0]);
         assert!(
-            lines[0].contains("sinks ≈0.012 m (budget 0.002 m)"),
+            lines[0].contains("sinks ≈12.0 mm (budget 2.0 mm)"),
             "{}",
             lines[0]
         );
@@ -178,5 +192,12 @@ mod tests {
         assert!(lines[2].contains("16384 m"), "{}", lines[2]);
         // A rebuilt body (the engine reports it afresh) is not reported again.
         assert!(reports.sentences(&output, named).is_empty());
+    }
+
+    #[test]
+    fn depths_are_given_in_a_unit_that_shows_them() {
+        assert_eq!(length(0.012), "12.0 mm");
+        assert_eq!(length(2.0e-5), "20.0 µm");
+        assert_eq!(length(1.5), "1.50 m");
     }
 }
