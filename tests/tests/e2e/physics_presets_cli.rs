@@ -3,32 +3,26 @@
 //! checked against analytic answers: what a user who writes a scene and picks a preset gets.
 
 use onyx_plugin_api::glam::Vec3;
+use onyx_runtime::PhysicsPreset;
 use onyx_tests::cli::{assert_exit, onyx, stderr};
-
-/// The three presets, with their step rate (Hz) and substeps (`PhysicsPreset::apply`).
-const PRESETS: [(&str, f32, f32); 3] = [
-    ("fast", 30.0, 2.0),
-    ("balanced", 60.0, 4.0),
-    ("precise", 120.0, 4.0),
-];
 
 /// A named body at the end of a run: name, position, linear velocity.
 type Body = (String, Vec3, Vec3);
 
 /// Runs `scene` (RON text) for `frames` fixed steps at `preset`; every named body at the
 /// end, and what the host logged (warnings and up).
-fn run(scene: &str, preset: &str, frames: u32) -> (Vec<Body>, String) {
+fn run(scene: &str, preset: PhysicsPreset, frames: u32) -> (Vec<Body>, String) {
     let dir = tempfile::tempdir().unwrap();
     let path = dir.path().join("scene.ron");
     let dump = dir.path().join("state.json");
     std::fs::write(&path, scene).unwrap();
-    let frames = frames.to_string();
+    let (preset, frames) = (preset.to_string(), frames.to_string());
     let (scene_arg, dump_arg) = (path.to_str().unwrap(), dump.to_str().unwrap());
     let out = onyx(&[
         "run",
         "--headless",
         "--physics",
-        preset,
+        &preset,
         "--frames",
         &frames,
         "--scene",
@@ -91,7 +85,8 @@ fn an_elastic_ball_on_the_moon_keeps_its_energy_at_every_preset() {
     );
     // A bounce from 2 m on the moon takes 2·√(2h/g) = 3.1 s: 40 s is 12 bounces.
     let seconds = 40.0;
-    for (preset, hz, substeps) in PRESETS {
+    for preset in PhysicsPreset::ALL {
+        let (hz, substeps) = (preset.step_hz(), preset.substeps() as f32);
         let (bodies, _) = run(&scene, preset, (seconds * hz) as u32);
         let (_, p, v) = body(&bodies, "ball");
         // The stored velocity leads the instantaneous one by half a substep of gravity
@@ -138,9 +133,9 @@ fn a_thousand_to_one_box_on_a_box_holds_or_is_reported_at_every_preset() {
         );
         let size = 2.0 * half;
         for (preset, bound) in [
-            ("fast", f32::INFINITY),
-            ("balanced", 0.02),
-            ("precise", 0.01),
+            (PhysicsPreset::Fast, f32::INFINITY),
+            (PhysicsPreset::Balanced, 0.02),
+            (PhysicsPreset::Precise, 0.01),
         ] {
             // 480 steps: 16 s at fast, 4 s at precise.
             let (bodies, log) = run(&scene, preset, 480);
@@ -150,7 +145,7 @@ fn a_thousand_to_one_box_on_a_box_holds_or_is_reported_at_every_preset() {
             let held = sink < bound.min(0.05 * size) && v.length() < 0.05 * size.max(1.0);
             let reported = log.contains("mass ratio 1000:1") && log.contains("holds it");
             assert!(
-                held || (preset == "fast" && reported),
+                held || (preset == PhysicsPreset::Fast && reported),
                 "{preset}, {size} m boxes: the heavy box is {sink} m into the light one \
                  (bound {bound} m and 5 % of {size} m), moving at {v}; the host logged:\n{log}"
             );

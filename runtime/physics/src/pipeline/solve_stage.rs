@@ -405,7 +405,7 @@ impl PhysicsWorld {
                         && load > 0.0
                         && !pair.overload_reported
                     {
-                        let carried = if g > 0.0 { own_accel / g } else { carried };
+                        let carried = if g > 0.0 { own_accel / g } else { stiffening };
                         overloads.push((r.pair, depth, budget, needed, carried));
                     }
                     if size_hz > load_hz {
