@@ -250,11 +250,15 @@ fn a_ball_landing_on_a_resting_ball_rebounds_to_its_drop_height() {
 /// just left the floor, a ball must not be thrown up as if that ball had hit the floor
 /// again (a column of two gained 45 % at fast and precise), nor lose what the lowest ball
 /// takes from the impacts (a column of two kept 36 % at fast and 37 % at balanced before the
-/// restitution passes drove every loaded point). Not kept whole: the soft contacts' own
-/// spring lifts the lowest ball a millimetre or two within an impact step, which no pass
-/// undoes; it then hops, and an impact on a hopping ball loses the potential energy the
-/// upper one spends closing the gap (up to 4 % each). Of the nine, the lowest is 0.78 (two
-/// balls at balanced), the highest 1.024 (two at fast and at precise).
+/// restitution passes drove every loaded point). A column of two, whose lower ball lies on
+/// the floor at every impact, keeps its energy within 5 %: the rebound leaves from where the
+/// held lower ball started the step, not from the few millimetres the impact pressed it into
+/// the floor (it kept 88 %, 78 % and 89 % at fast, balanced and precise before; now 97 %,
+/// 99 % and 99 %). Taller columns are not kept whole: the soft contacts' own spring lifts
+/// the lowest ball a millimetre or two within an impact step, which no pass undoes; it then
+/// hops, and an impact on a hopping ball loses or gains the potential energy the upper one
+/// spends closing the gap (up to 4 % each). Of the nine, the lowest is 0.81 (four balls at
+/// fast), the highest 1.048 (two at precise, once the lower ball hops).
 #[test]
 fn a_column_of_elastic_balls_keeps_most_of_its_energy_and_gains_none() {
     for preset in PhysicsPreset::ALL {
@@ -270,10 +274,11 @@ fn a_column_of_elastic_balls_keeps_most_of_its_energy_and_gains_none() {
                 (most, least) = (most.max(e), least.min(e));
             }
             println!("{preset}, {n} balls: energy between {least:.3} and {most:.3} of the start");
+            let lowest = if n == 2 { 0.95 } else { 0.7 };
             assert!(
-                most < 1.05 && least > 0.7,
+                most < 1.05 && least > lowest,
                 "{preset}: a column of {n} elastic balls ranged over {least}–{most} of its \
-                 energy, expected 0.7–1.05"
+                 energy, expected {lowest}–1.05"
             );
         }
     }

@@ -26,6 +26,7 @@ const MAX_SWEEPS: usize = 8;
 pub(crate) struct RestingAccelerations {
     own: Vec<Vec3>,
     resting: Vec<Vec3>,
+    held: Vec<bool>,
 }
 
 impl RestingAccelerations {
@@ -86,7 +87,19 @@ impl RestingAccelerations {
         Self {
             own,
             resting: accel,
+            held,
         }
+    }
+
+    /// Where side `side` (0: A, 1: B) of manifold `r` is held by supports of its own, not
+    /// through `r` (a ball lying on the floor, for a ball landing on it): the unit direction
+    /// its acceleration presses it into them (the part the supports take); else zero.
+    pub(crate) fn pressing(&self, r: &ManifoldRef, side: u8) -> Vec3 {
+        let body = if side == 0 { r.body_a } else { r.body_b } as usize;
+        if r.rests & (1 << side) != 0 || !self.held.get(body).copied().unwrap_or(false) {
+            return Vec3::ZERO;
+        }
+        (self.own[body] - self.resting[body]).normalize_or_zero()
     }
 
     /// The acceleration, m/s², of side `side` (0: A, 1: B) of manifold `r` for its impact:

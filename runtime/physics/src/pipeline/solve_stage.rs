@@ -13,7 +13,7 @@ use crate::physics_world::SolverSlot;
 use crate::pipeline::jointed_masses::JointedMasses;
 use crate::rigid_body::mask_mat;
 use crate::solver::body_state::BodyState;
-use crate::solver::contact_batch::Jitter;
+use crate::solver::contact_batch::{levelled_for_load, Jitter, LOADED_LEVEL_SHARE};
 use crate::solver::contact_constraint::{
     prepare, ContactConstraint, FrictionPart, ManifoldRef, NormalBlock, PreparedManifold,
 };
@@ -284,6 +284,8 @@ impl PhysicsWorld {
                     tangent: [t1.into(), t2.into()],
                     restitution: pair.restitution,
                     bounce_accel: 0.0,
+                    pressing: [Vec3A::ZERO; 2],
+                    load_level_share: 0.0,
                     mass_scale: support_mass_scale(
                         &states[r.body_a as usize],
                         &states[r.body_b as usize],
@@ -325,6 +327,7 @@ impl PhysicsWorld {
                     // speed.
                     let accel = n.dot(resting.get(r, 1) - resting.get(r, 0));
                     c.bounce_accel = accel;
+                    c.pressing = [0, 1].map(|side| resting.pressing(r, side).into());
                     for cp in &mut points[..count] {
                         cp.restitution_velocity = bounce_velocity(
                             cp.relative_velocity,
@@ -386,8 +389,8 @@ impl PhysicsWorld {
                 let load_hz = Softness::load_hertz(base_hz, ratio, cap);
                 let omega_load = 2.0 * std::f32::consts::PI * load_hz;
                 // Most contacts settle within their budget at the load stiffness: nothing more.
-                c.softness = if load_accel <= budget * omega_load * omega_load {
-                    Softness::new(load_hz, s.contact_damping_ratio, h)
+                let (softness, used_hz) = if load_accel <= budget * omega_load * omega_load {
+                    (Softness::new(load_hz, s.contact_damping_ratio, h), load_hz)
                 } else {
                     let needed = Softness::size_hertz(load_accel, budget);
                     let size_hz = needed.min(max_size_hertz);
@@ -408,7 +411,7 @@ impl PhysicsWorld {
                         let carried = if g > 0.0 { own_accel / g } else { stiffening };
                         overloads.push((r.pair, depth, budget, needed, carried));
                     }
-                    if size_hz > load_hz {
+                    let softness = if size_hz > load_hz {
                         // Damped for the mass that moves rigidly with the contact: what it
                         // carries, but no more than the body on it and the bodies jointed to
                         // that one. Bodies resting further up hang on soft contacts of their
@@ -433,7 +436,14 @@ impl PhysicsWorld {
                         )
                     } else {
                         Softness::new(load_hz, s.contact_damping_ratio, h)
-                    }
+                    };
+                    (softness, used)
+                };
+                c.softness = softness;
+                c.load_level_share = if levelled_for_load(ratio, used_hz, pair.size, g) {
+                    LOADED_LEVEL_SHARE
+                } else {
+                    0.0
                 };
             };
         let mut overloads: Vec<(u32, f32, f32, f32, f32)> = Vec::new();

@@ -287,6 +287,8 @@ mod tests {
                 tangent: [Vec3A::X, Vec3A::Z],
                 restitution: 0.0,
                 bounce_accel: 0.0,
+                pressing: [Vec3A::ZERO; 2],
+                load_level_share: 0.0,
                 mass_scale: [1.0; 2],
                 softness: Softness::RIGID,
                 count: r.count,

@@ -166,6 +166,43 @@ pub const LEVEL_MAX_FRICTION: f32 = 1e-3;
 /// after 8 s; from 0.95 down to 0.5 the columns hold and so do the offset stacks of 0 leak.
 pub const LEVEL_SHARE: f32 = 0.75;
 
+/// How much of the leak of a face levelled under its load (see
+/// [`levelled_for_load`]) is the patch's mean impulse: less than a frictionless face's
+/// [`LEVEL_SHARE`], so that a brick resting on two supports that sink unevenly keeps some
+/// tilt of its own on each. Bounded `(0, 1)`: over five starts of the 100-row pyramid at
+/// 60 Hz × 4, 0.9 on every friction face threw it apart (5–15 m) and 0.15 left it swaying
+/// (mean 0.90 m); from 0.3 to 0.6 it slumped 0.71 m.
+pub const LOADED_LEVEL_SHARE: f32 = 0.4;
+
+/// Fraction of the critical load ratio (see [`levelled_for_load`]) from which a
+/// resting face with friction is levelled. Bounded `(0, ∞)`: at 1 the 100-row pyramid at
+/// 60 Hz × 4 still swayed (mean 0.98 m over five starts); levelling every friction face
+/// (0) made the 20-row pyramid slump 3–6 cm instead of 2.5 cm.
+pub const TILT_LEVEL_FRACTION: f32 = 2.0 / 3.0;
+
+/// Whether a face with friction of stiffness `hertz` under bodies of `size` metres is
+/// levelled for its load: its `load_ratio` (the contact's load over the weight of its own
+/// effective mass) is past [`TILT_LEVEL_FRACTION`] of the ratio at which a soft face stops
+/// holding the tilt of the column on it, `ω·√(size / 2g)` (compared squared: this runs for
+/// every manifold every step).
+///
+/// A soft face's points deflect in proportion to their impulses, so it resists tilting like
+/// a spring of stiffness `k_θ ≈ m·ω²·w²/4` (width `w`, effective mass `m`), and the load it
+/// carries, `W = ratio·m·g`, tips it further the higher its centre of mass sits, `ℓ`
+/// (the P-Δ effect of a column). Taken as a column of `ratio` bodies of the face's own size
+/// (`w = size`, `ℓ = ratio·size/2`), the face holds the column's tilt while `k_θ > W·ℓ`:
+/// `ratio < ω·√(size / 2g)`. Past it a sway grows: the 100-row pyramid, a wall one box deep,
+/// leaned out of its plane from its lower rows (rows tilting by up to 1e-2 rad about the
+/// row's axis, rapier 5e-4) and slumped 0.68–1.86 m over five starts at 60 Hz × 4 (rapier
+/// 0.68 m). Its lower rows now level their faces in part ([`LOADED_LEVEL_SHARE`]). Never
+/// without gravity.
+#[must_use]
+#[inline]
+pub fn levelled_for_load(load_ratio: f32, hertz: f32, size: f32, g: f32) -> bool {
+    let limit = TILT_LEVEL_FRACTION * 2.0 * std::f32::consts::PI * hertz;
+    g > 0.0 && load_ratio > 0.0 && load_ratio * load_ratio * 2.0 * g > limit * limit * size
+}
+
 /// The lanes whose face [`ManifoldRows::level_patch`] levelled: their points' rows leak the
 /// patch's mean impulse instead of their own.
 #[derive(Clone, Copy, Debug)]
@@ -176,6 +213,8 @@ pub(crate) struct Leveled {
     pub mean_impulse: F,
     /// 1 / points per lane.
     pub inv_count: F,
+    /// How much of each point's leak is the mean impulse, per lane.
+    pub share: F,
 }
 
 impl Leveled {
@@ -184,6 +223,7 @@ impl Leveled {
         lanes: F::ZERO,
         mean_impulse: F::ZERO,
         inv_count: F::ZERO,
+        share: F::ZERO,
     };
 }
 
@@ -316,6 +356,10 @@ pub(crate) struct ContactBatch<const N: usize, M: ManifoldRows, L: Levers<N>> {
     manifold: M,
     /// Relative normal acceleration (gravity, forces) of the bodies, m/s², for restitution.
     bounce_accel: F,
+    /// Where side A (resp. B) is held by its own supports, the unit direction it is pressed
+    /// into them; else zero.
+    pressing_a: V3,
+    pressing_b: V3,
 }
 
 /// Sets lane `l` of `f`.
@@ -382,6 +426,8 @@ impl<const N: usize, M: ManifoldRows, L: Levers<N>> ContactBatch<N, M, L> {
         levers: L::EMPTY,
         manifold: M::EMPTY,
         bounce_accel: F::ZERO,
+        pressing_a: V3::ZERO,
+        pressing_b: V3::ZERO,
     };
 
     /// Writes a prepared manifold into lane `l`, which reports `id` in
@@ -412,6 +458,8 @@ impl<const N: usize, M: ManifoldRows, L: Levers<N>> ContactBatch<N, M, L> {
         set(&mut self.impulse_scale, l, c.softness.impulse_scale);
         set(&mut self.restitution, l, c.restitution);
         set(&mut self.bounce_accel, l, c.bounce_accel);
+        self.pressing_a.set(l, c.pressing[0]);
+        self.pressing_b.set(l, c.pressing[1]);
         let count = usize::from(c.count);
         for (lanes, p) in self.points.iter_mut().zip(&prepared.points).take(count) {
             set(&mut lanes.base_separation, l, p.base_separation);
@@ -597,7 +645,7 @@ impl<const N: usize, M: ManifoldRows, L: Levers<N>> ContactBatch<N, M, L> {
         self.manifold
             .solve_shared(&mut self.points, &rows, &mut vn, &mut applied);
         let mut leveled = self.manifold.level_patch(&self.points, &rows);
-        let level_share = F::splat(LEVEL_SHARE);
+        let level_share = leveled.share;
         for j in 0..N {
             let cp = &mut self.points[j];
             let own = cp.normal_impulse;
@@ -729,7 +777,13 @@ impl<const N: usize, M: ManifoldRows, L: Levers<N>> ContactBatch<N, M, L> {
             )
         };
         let n = self.normal;
-        let dpn = (dp_b - dp_a).dot(n);
+        // Where the step left the bodies, but a held side where it started along the
+        // direction it is pressed into its supports: an impact presses a ball lying on the
+        // floor into it (the soft contact's deflection under the impact), and a rebound
+        // measured from there lacks the potential energy of that depth (see `restitution`,
+        // "Where the step ends"). Its motion across that direction (sliding) counts.
+        let (pa, pb) = (self.pressing_a, self.pressing_b);
+        let dpn = ((dp_b - pb.scale(dp_b.dot(pb))) - (dp_a - pa.scale(dp_a.dot(pa)))).dot(n);
         let accel = self.bounce_accel;
         let half_h = F::splat(0.5 * h);
         for (k, cp) in self.points.iter_mut().enumerate() {
@@ -793,5 +847,27 @@ impl<const N: usize, M: ManifoldRows, L: Levers<N>> ContactBatch<N, M, L> {
         }
         let c = change.to_array();
         c[0].max(c[1]).max(c[2].max(c[3]))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_face_is_levelled_from_two_thirds_of_the_column_it_can_hold_in_tilt() {
+        let g = 9.81;
+        // A 1 m box on a 1 m box at 32 Hz: the face holds a column of ~45 boxes in tilt
+        // (ω·√(size / 2g) = 45.4), levelled from two thirds of that, ~30.3.
+        assert!(!levelled_for_load(30.0, 32.0, 1.0, g));
+        assert!(levelled_for_load(30.6, 32.0, 1.0, g));
+        // Stiffer faces hold twice the column at twice the stiffness; larger bodies are a
+        // taller column per body (√size).
+        assert!(!levelled_for_load(60.0, 64.0, 1.0, g));
+        assert!(levelled_for_load(61.2, 64.0, 1.0, g));
+        assert!(!levelled_for_load(60.0, 32.0, 4.0, g));
+        assert!(levelled_for_load(61.2, 32.0, 4.0, g));
+        // No gravity, no column to hold: never levelled for load.
+        assert!(!levelled_for_load(1e6, 32.0, 1.0, 0.0));
     }
 }

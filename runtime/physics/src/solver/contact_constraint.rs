@@ -142,6 +142,14 @@ pub(crate) struct ContactConstraint {
     pub restitution: f32,
     /// Relative normal acceleration of the bodies (gravity, forces), m/s², for restitution.
     pub bounce_accel: f32,
+    /// Per side (A, B): where the body's own supports hold it, the unit direction its
+    /// acceleration presses it into them (see `RestingAccelerations::pressing`), else zero.
+    /// A rebound leaves from where a held side started the step along it, not from where the
+    /// impact pressed it into its supports.
+    pub pressing: [Vec3A; 2],
+    /// How much of each point's leak is the patch's mean impulse for a face levelled under
+    /// its load (see `FaceContact::level_patch`); 0: not levelled for its load.
+    pub load_level_share: f32,
     /// Factors on each body's inverse mass and inertia in this manifold's rows (1 but for
     /// the light body of a resting contact past `PhysicsSettings::max_support_mass_ratio`).
     pub mass_scale: [f32; 2],

@@ -3,7 +3,7 @@
 //! points, the coupling between its points' normal rows, and twist friction about the normal.
 
 use super::contact_batch::{
-    fmax, set, Leveled, ManifoldRows, NormalRows, PointLanes, LEVEL_MAX_FRICTION,
+    fmax, set, Leveled, ManifoldRows, NormalRows, PointLanes, LEVEL_MAX_FRICTION, LEVEL_SHARE,
 };
 use super::contact_constraint::{PreparedManifold, PAIR_SLOT};
 use super::lanes::{Velocities, F, V3};
@@ -16,9 +16,12 @@ pub(crate) struct FaceContact {
     soft_compliance: F,
     /// Lane mask: the shared normal step applies.
     patch: F,
-    /// Lane mask: a patch with friction below `LEVEL_MAX_FRICTION`, levelled while it rests
-    /// ([`FaceContact::level_patch`]); set once per step, with the lane.
-    frictionless: F,
+    /// Lane mask: a patch levelled while it rests ([`FaceContact::level_patch`]): one with
+    /// friction below `LEVEL_MAX_FRICTION`, or under a load past its tilt limit
+    /// (`levelled_for_load`); set once per step, with the lane.
+    levelled: F,
+    /// How much of each point's leak is the patch's mean impulse, for the levelled lanes.
+    level_share: F,
     patch_k: F,
     row_sum: [F; 4],
     coupling: [F; 6],
@@ -40,7 +43,8 @@ impl ManifoldRows for FaceContact {
     const EMPTY: Self = Self {
         soft_compliance: F::ZERO,
         patch: F::ZERO,
-        frictionless: F::ZERO,
+        levelled: F::ZERO,
+        level_share: F::ZERO,
         patch_k: F::ZERO,
         row_sum: [F::ZERO; 4],
         coupling: [F::ZERO; 6],
@@ -69,12 +73,18 @@ impl ManifoldRows for FaceContact {
             0.0
         };
         set(&mut self.patch, l, mask);
-        let level = if c.block.patch && c.friction.friction < LEVEL_MAX_FRICTION {
+        let share = if c.friction.friction < LEVEL_MAX_FRICTION {
+            LEVEL_SHARE
+        } else {
+            c.load_level_share
+        };
+        let level = if c.block.patch && share > 0.0 {
             f32::from_bits(u32::MAX)
         } else {
             0.0
         };
-        set(&mut self.frictionless, l, level);
+        set(&mut self.levelled, l, level);
+        set(&mut self.level_share, l, share);
         set(&mut self.patch_k, l, c.block.patch_k);
         for k in 0..4 {
             set(&mut self.row_sum[k], l, c.block.row_sum[k]);
@@ -166,8 +176,10 @@ impl ManifoldRows for FaceContact {
 
     /// A resting frictionless face (every point of the patch pressed in) leaks mostly the
     /// patch's mean impulse from each point's row instead of the point's own
-    /// ([`LEVEL_SHARE`](super::contact_batch::LEVEL_SHARE) of it), so it is soft in depth and
-    /// nearly rigid in tilt.
+    /// ([`LEVEL_SHARE`] of it), so it is soft in depth and nearly rigid in tilt; a face with
+    /// friction does so in part ([`LOADED_LEVEL_SHARE`](super::contact_batch::LOADED_LEVEL_SHARE))
+    /// once its load passes the ratio at which its tilt compliance lets the column on it sway
+    /// ([`levelled_for_load`](super::contact_batch::levelled_for_load)).
     ///
     /// A soft row settles at a depth proportional to the impulse it carries, so independent
     /// soft rows make a face as compliant in tilt as in depth: a load off the face's centre
@@ -179,17 +191,17 @@ impl ManifoldRows for FaceContact {
     /// the patch as a whole keeps the soft contact's stiffness and static deflection (the
     /// rows' mean is the shared step's target); the point's own share keeps the tilt damped
     /// (a frictionless 20-box column rocked and fell without it). Impulses stay non-negative
-    /// point by point, so a face whose load leaves its support still tips over its edge. Only frictionless
-    /// faces: a face with friction resting on two supports (a brick in a pyramid) cannot be
-    /// level on both, and rows without their own leak wind up against each other (the 20-row
-    /// pyramid slumped 3.7 m instead of 2.5 cm).
+    /// point by point, so a face whose load leaves its support still tips over its edge.
+    /// Friction faces in general keep their own leak: one resting on two supports (a brick
+    /// in a pyramid) cannot be level on both, and rows without their own leak wind up
+    /// against each other (the 20-row pyramid slumped 3.7 m instead of 2.5 cm).
     #[inline(always)]
     fn level_patch<const N: usize>(
         &self,
         points: &[PointLanes; N],
         rows: &NormalRows<N>,
     ) -> Leveled {
-        let mut flat = self.frictionless;
+        let mut flat = self.levelled;
         if !rows.use_bias || !flat.any() {
             return Leveled::NONE;
         }
@@ -203,6 +215,7 @@ impl ManifoldRows for FaceContact {
             lanes: flat,
             mean_impulse: impulse_sum * self.inv_count,
             inv_count: self.inv_count,
+            share: self.level_share,
         }
     }
 

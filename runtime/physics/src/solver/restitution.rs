@@ -13,7 +13,12 @@
 //! - **Where the step ends.** The substeps leave the bodies at separation `s₁`: a little
 //!   inside each other (the soft contact's deflection), or a few millimetres short when the
 //!   last substep's speculative row stopped them ahead of the next. The rebound leaves from
-//!   there with `√(v² + 2·a·s₁)`, so that the energy is the impact's.
+//!   there with `√(v² + 2·a·s₁)`, so that the energy is the impact's. A side held by its own
+//!   supports (a ball lying on the floor, for one landing on it) counts where it started the
+//!   step: `a` treats it as fixed, and the impact pressed it a few millimetres into its
+//!   support through that soft contact, which the rebound measured from there lost as
+//!   potential energy (the upper ball of a column of two kept 78 % of the column's energy
+//!   over 20 s at 60 Hz, now 99 %).
 //! - **Substep phase.** The solver's velocities are those of each substep's position update,
 //!   which lead (for `a < 0`) the instantaneous velocity at the substep's end by `a·h/2`
 //!   (semi-implicit Euler). The step-start velocity is `u = v₀ + a·h/2`; the rebound stored is
