@@ -84,7 +84,8 @@ fn overload_sentence(c: &OverloadedContact, a: &Named, b: &Named) -> String {
         None => "no preset holds it: more substeps, a lighter load or a larger body do".into(),
     };
     format!(
-        "physics: bodies {a}/{b}{ratio}: carries {:.0}× its weight, sinks ≈{} (budget {}); \
+        "physics: bodies {a}/{b}{ratio}: the contact carries {:.0}× the load of a body \
+         resting alone, sinks ≈{} (budget {}); \
          {cure}",
         c.load_ratio,
         length(c.expected_depth),
@@ -171,7 +172,11 @@ mod tests {
         assert_eq!(lines.len(), 3, "{lines:#?}");
         assert!(lines[0].contains("bodies \"crate\""), "{}", lines[0]);
         assert!(lines[0].contains("mass ratio 1000:1"), "{}", lines[0]);
-        assert!(lines[0].contains("carries 999× its weight"), "{}", lines[0]);
+        assert!(
+            lines[0].contains("carries 999× the load of a body resting alone"),
+            "{}",
+            lines[0]
+        );
         assert!(
             lines[0].contains("sinks ≈12.0 mm (budget 2.0 mm)"),
             "{}",
