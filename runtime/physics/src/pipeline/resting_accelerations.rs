@@ -26,7 +26,6 @@ const MAX_SWEEPS: usize = 8;
 pub(crate) struct RestingAccelerations {
     own: Vec<Vec3>,
     resting: Vec<Vec3>,
-    held: Vec<bool>,
 }
 
 impl RestingAccelerations {
@@ -87,26 +86,29 @@ impl RestingAccelerations {
         Self {
             own,
             resting: accel,
-            held,
         }
     }
 
     /// Where side `side` (0: A, 1: B) of manifold `r` is held by supports of its own, not
     /// through `r` (a ball lying on the floor, for a ball landing on it): the unit direction
-    /// its acceleration presses it into them (the part the supports take); else zero.
+    /// its acceleration presses it into them, the part its supports take (its own less its
+    /// resting acceleration); else zero (nothing was taken).
     pub(crate) fn pressing(&self, r: &ManifoldRef, side: u8) -> Vec3 {
-        let body = if side == 0 { r.body_a } else { r.body_b } as usize;
-        if r.rests & (1 << side) != 0 || !self.held.get(body).copied().unwrap_or(false) {
+        if r.rests & (1 << side) != 0 {
             return Vec3::ZERO;
         }
-        (self.own[body] - self.resting[body]).normalize_or_zero()
+        let body = side_body(r, side);
+        match (self.own.get(body), self.resting.get(body)) {
+            (Some(&own), Some(&resting)) => (own - resting).normalize_or_zero(),
+            _ => Vec3::ZERO,
+        }
     }
 
     /// The acceleration, m/s², of side `side` (0: A, 1: B) of manifold `r` for its impact:
     /// with its supports, unless it rests on the other body through `r` itself (then its
     /// own: the support `r` gives is what the impact is about).
     pub(crate) fn get(&self, r: &ManifoldRef, side: u8) -> Vec3 {
-        let body = if side == 0 { r.body_a } else { r.body_b } as usize;
+        let body = side_body(r, side);
         let list = if r.rests & (1 << side) != 0 {
             &self.own
         } else {
@@ -114,4 +116,9 @@ impl RestingAccelerations {
         };
         list.get(body).copied().unwrap_or(Vec3::ZERO)
     }
+}
+
+/// The solver slot of side `side` (0: A, 1: B) of manifold `r`.
+fn side_body(r: &ManifoldRef, side: u8) -> usize {
+    (if side == 0 { r.body_a } else { r.body_b }) as usize
 }
