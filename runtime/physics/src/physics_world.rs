@@ -61,6 +61,8 @@ pub struct PhysicsWorld {
     pub(crate) solver_slots: Vec<SolverSlot>,
     /// The constraints as SIMD batches for the substeps.
     pub(crate) contact_batches: crate::solver::batching::ContactBatches,
+    /// The energy of elastic impacts, kept between steps for its buffers.
+    pub(crate) elastic_energy: crate::solver::elastic_energy::ElasticEnergy,
     pub(crate) new_pairs: Vec<(u32, u32)>,
     /// Arena indices of the bodies that take part in this step (awake, not static, not
     /// quarantined), gathered by the pre-step and by wake-ups; sleeping bodies are not in it.
@@ -130,6 +132,7 @@ impl PhysicsWorld {
             narrow_bodies: Vec::new(),
             solver_slots: Vec::new(),
             contact_batches: Default::default(),
+            elastic_energy: Default::default(),
             new_pairs: Vec::new(),
             deepest_contact: Vec::new(),
             active_bodies: Vec::new(),

@@ -10,5 +10,5 @@ mod prestep;
 mod resting_accelerations;
 mod sleep_stage;
 mod solve_stage;
-mod union_find;
+pub(crate) mod union_find;
 mod writeback_stage;

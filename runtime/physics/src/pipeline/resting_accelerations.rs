@@ -97,7 +97,12 @@ impl RestingAccelerations {
         if r.rests & (1 << side) != 0 {
             return Vec3::ZERO;
         }
-        let body = side_body(r, side);
+        self.pressing_of(side_body(r, side))
+    }
+
+    /// Where solver body `body` is held by supports, the unit direction its acceleration
+    /// presses it into them; else zero.
+    pub(crate) fn pressing_of(&self, body: usize) -> Vec3 {
         match (self.own.get(body), self.resting.get(body)) {
             (Some(&own), Some(&resting)) => (own - resting).normalize_or_zero(),
             _ => Vec3::ZERO,

@@ -189,6 +189,8 @@ impl PhysicsWorld {
         self.manifold_refs.clear();
         let mut contacts = 0u32;
         let mut bouncy = false;
+        // Some contact may be elastic (e = 1, no friction): see `solver::elastic_energy`.
+        let mut elastic = false;
         for &pi in &self.narrowphase.updated_pairs {
             let pair = &self.narrowphase.pairs[pi as usize];
             if pair.manifolds.is_empty() || pair.sensor {
@@ -206,6 +208,9 @@ impl PhysicsWorld {
                 continue;
             }
             bouncy |= pair.restitution > 0.0;
+            elastic |= pair.restitution >= 1.0
+                && pair.static_friction == 0.0
+                && pair.dynamic_friction == 0.0;
             for (mi, m) in pair.manifolds.iter().enumerate() {
                 if m.points.is_empty() {
                     continue;
@@ -283,6 +288,7 @@ impl PhysicsWorld {
                     normal: n.into(),
                     tangent: [t1.into(), t2.into()],
                     restitution: pair.restitution,
+                    elastic: false,
                     bounce_accel: 0.0,
                     pressing: [Vec3A::ZERO; 2],
                     load_level_share: 0.0,
@@ -348,6 +354,26 @@ impl PhysicsWorld {
                             )
                         });
                     }
+                    // Elastic: no point's impact was made inelastic by the threshold (one
+                    // that bounces without it but not with it).
+                    let threshold = s.restitution_threshold;
+                    c.elastic = pair.restitution >= 1.0
+                        && pair.static_friction == 0.0
+                        && pair.dynamic_friction == 0.0
+                        && points[..count].iter().all(|cp| {
+                            cp.restitution_velocity > 0.0
+                                || threshold == 0.0
+                                || bounce_velocity(
+                                    cp.relative_velocity,
+                                    cp.base_separation,
+                                    accel,
+                                    h,
+                                    s.dt,
+                                    1.0,
+                                    0.0,
+                                )
+                                .is_none()
+                        });
                 }
                 // Static contacts are twice as stiff (Box2D v3); both stiffen with load, and
                 // further where the load would press them deeper than the penetration budget
@@ -468,6 +494,15 @@ impl PhysicsWorld {
                 gravity: s.gravity.length(),
             },
         };
+        let elastic = if elastic {
+            let e = &mut self.elastic_energy;
+            e.pressing.clear();
+            e.pressing
+                .extend((0..self.solver_states.len()).map(|i| Vec3A::from(resting.pressing_of(i))));
+            Some(e)
+        } else {
+            None
+        };
         self.output.counters.gyro_not_converged = solve_substeps(
             &mut self.solver_bodies,
             &mut self.solver_states,
@@ -475,6 +510,7 @@ impl PhysicsWorld {
             &mut self.joint_constraints,
             &mut self.joint_rows,
             &params,
+            elastic,
         );
         self.finish_joints();
 

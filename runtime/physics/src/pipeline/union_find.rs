@@ -3,7 +3,7 @@
 
 /// Disjoint sets over `0..n` with path splitting; a union keeps the smaller root, so the
 /// root of a set does not depend on the order of the unions within it.
-#[derive(Debug)]
+#[derive(Debug, Default)]
 pub(crate) struct UnionFind {
     parent: Vec<u32>,
 }
@@ -14,6 +14,12 @@ impl UnionFind {
         Self {
             parent: (0..n as u32).collect(),
         }
+    }
+
+    /// Back to `n` singleton sets, keeping the allocation.
+    pub(crate) fn reset(&mut self, n: usize) {
+        self.parent.clear();
+        self.parent.extend(0..n as u32);
     }
 
     /// The root of `x`'s set.

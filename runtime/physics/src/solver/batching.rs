@@ -11,7 +11,7 @@
 
 use super::body_state::BodyState;
 use super::contact_batch::{
-    ContactBatch, FaceBatch, Jitter, LaneResult, Levers, LinearFaceBatch, LinearPointBatch,
+    ContactBatch, FaceBatch, Jitter, LaneResult, Levers, LinearFaceBatch, LinearPointBatch, Link,
     ManifoldRows, Pass, PointBatch,
 };
 use super::contact_constraint::{ManifoldRef, PreparedManifold};
@@ -234,6 +234,23 @@ impl ContactBatches {
         change
     }
 
+    /// Calls `f` for every manifold that pushed this step (see
+    /// [`ContactBatch::for_each_pushing_link`](super::contact_batch::ContactBatch::for_each_pushing_link)).
+    pub(crate) fn for_each_pushing_link(&self, mut f: impl FnMut(Link)) {
+        self.four
+            .iter()
+            .for_each(|b| b.for_each_pushing_link(&mut f));
+        self.one
+            .iter()
+            .for_each(|b| b.for_each_pushing_link(&mut f));
+        self.four_linear
+            .iter()
+            .for_each(|b| b.for_each_pushing_link(&mut f));
+        self.one_linear
+            .iter()
+            .for_each(|b| b.for_each_pushing_link(&mut f));
+    }
+
     /// Calls `f(manifold index, impulses)` for every manifold, batch by batch (see
     /// [`LaneResult::impact`] for `jitter`).
     pub(crate) fn for_each_result(&self, jitter: Jitter, mut f: impl FnMut(u32, &LaneResult)) {
@@ -286,6 +303,7 @@ mod tests {
                 normal: Vec3A::Y,
                 tangent: [Vec3A::X, Vec3A::Z],
                 restitution: 0.0,
+                elastic: false,
                 bounce_accel: 0.0,
                 pressing: [Vec3A::ZERO; 2],
                 load_level_share: 0.0,

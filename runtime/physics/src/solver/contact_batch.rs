@@ -328,6 +328,18 @@ pub(crate) struct LaneResult {
     pub impact: [bool; 4],
 }
 
+/// Two bodies a contact pushed apart this step (see
+/// [`ContactBatch::for_each_pushing_link`]).
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Link {
+    /// Solver indices of bodies A and B.
+    pub bodies: [u32; 2],
+    /// Whether the solver writes A (resp. B): it is dynamic.
+    pub writes: [bool; 2],
+    /// `ContactConstraint::elastic`.
+    pub elastic: bool,
+}
+
 /// Four manifolds of at most `N` points as lanes, with the rows of layout `M` and the lever
 /// arms `L` (none for manifolds whose bodies do not rotate).
 #[derive(Clone, Copy, Debug)]
@@ -339,6 +351,8 @@ pub(crate) struct ContactBatch<const N: usize, M: ManifoldRows, L: Levers<N>> {
     /// Bit `l`: lane `l` writes body A (resp. B) back.
     writes_a: u8,
     writes_b: u8,
+    /// Bit `l`: lane `l`'s contact is elastic (`ContactConstraint::elastic`).
+    elastic: u8,
     inv_mass_a: V3,
     inv_mass_b: V3,
     normal: V3,
@@ -410,6 +424,7 @@ impl<const N: usize, M: ManifoldRows, L: Levers<N>> ContactBatch<N, M, L> {
         body_b: [0; LANES],
         writes_a: 0,
         writes_b: 0,
+        elastic: 0,
         inv_mass_a: V3::ZERO,
         inv_mass_b: V3::ZERO,
         normal: V3::ZERO,
@@ -446,6 +461,7 @@ impl<const N: usize, M: ManifoldRows, L: Levers<N>> ContactBatch<N, M, L> {
         self.body_b[l] = c.body_b;
         self.writes_a |= (c.writes & 1) << l;
         self.writes_b |= ((c.writes >> 1) & 1) << l;
+        self.elastic |= u8::from(c.elastic) << l;
         self.inv_mass_a
             .set(l, states[c.body_a as usize].inv_mass * c.mass_scale[0]);
         self.inv_mass_b
@@ -528,6 +544,25 @@ impl<const N: usize, M: ManifoldRows, L: Levers<N>> ContactBatch<N, M, L> {
                 r.impact[k] = (impact[k] >> l) & 1 != 0;
             }
             f(ci, &r);
+        }
+    }
+
+    /// Calls `f` for every lane whose contact pushed this step (a point's impulse was
+    /// positive in a substep or a restitution pass).
+    pub(crate) fn for_each_pushing_link(&self, mut f: impl FnMut(Link)) {
+        let pushed = self.points.iter().fold(0u8, |m, p| {
+            m | p.max_normal_impulse.simd_gt(F::ZERO).to_bitmask() as u8
+        });
+        for (l, &ci) in self.constraint.iter().enumerate() {
+            if ci == u32::MAX || pushed & (1 << l) == 0 {
+                continue;
+            }
+            let bit = |m: u8| (m >> l) & 1 != 0;
+            f(Link {
+                bodies: [self.body_a[l], self.body_b[l]],
+                writes: [bit(self.writes_a), bit(self.writes_b)],
+                elastic: bit(self.elastic),
+            });
         }
     }
 

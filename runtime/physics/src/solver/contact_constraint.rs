@@ -140,6 +140,9 @@ pub(crate) struct ContactConstraint {
     pub normal: Vec3A,
     pub tangent: [Vec3A; 2],
     pub restitution: f32,
+    /// Restitution 1, no friction, and no impact that the restitution threshold took as
+    /// inelastic: the contact does no work over the step (see `solver::elastic_energy`).
+    pub elastic: bool,
     /// Relative normal acceleration of the bodies (gravity, forces), m/s², for restitution.
     pub bounce_accel: f32,
     /// Per side (A, B): where the body's own supports hold it, the unit direction its

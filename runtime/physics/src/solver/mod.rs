@@ -4,6 +4,7 @@ pub(crate) mod batching;
 pub(crate) mod body_state;
 pub(crate) mod contact_batch;
 pub(crate) mod contact_constraint;
+pub mod elastic_energy;
 pub(crate) mod face_contact;
 pub mod free_rotation;
 pub(crate) mod joint_constraint;

@@ -38,6 +38,14 @@
 //! their energy over 10,000 steps under gravity at 60 Hz (now 0.4 %). The passes run until
 //! no point's velocity changes by more than a tolerance (see `solve.rs`). Their impulses
 //! are an impact's, not a load's: the next step does not warm start them.
+//!
+//! **Energy of elastic impacts.** The passes return each impact's energy at its contact;
+//! where a body meets two others in one step the positions the soft substeps leave match
+//! no sequence of rigid impacts (a ball hopping on the floor, struck from above, is held by
+//! the floor in the air), and up to 0.2 % of the crowd's energy went each such step. Where
+//! the law is exact (frictionless `e = 1` contacts only), [`super::elastic_energy`] scales
+//! the passes' impulses of each group of bodies so that its energy is its step-start
+//! energy: the crowd at 30 Hz lost 2.5–8.7 % over 10,000 steps, now at most 0.6 %.
 
 /// Rebound speed, m/s, that restitution `e` gives a point whose relative normal velocity was
 /// `v0` (m/s, negative approaching) at step start, at separation `s0` (m), under relative

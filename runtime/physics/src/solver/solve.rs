@@ -6,6 +6,7 @@ use glam::{Quat, Vec3, Vec3A};
 use super::batching::ContactBatches;
 use super::body_state::BodyState;
 use super::contact_batch::{Jitter, Pass};
+use super::elastic_energy::ElasticEnergy;
 use super::free_rotation::free_rotation_step;
 use super::joint_constraint::{JointConstraint, Rows};
 use super::solver_body::{SolverBody, CAPPED_ANGULAR, CAPPED_LINEAR};
@@ -42,7 +43,8 @@ pub(crate) struct SolveParams {
 /// Runs all substeps over awake bodies, their joints and their contact batches (joints
 /// before contacts in each pass, as Box2D v3 orders them). Returns how many free-rotation
 /// solves missed their tolerance (see [`free_rotation_step`]). `rows` holds each joint's rows,
-/// parallel to `joints` (its length is theirs).
+/// parallel to `joints` (its length is theirs). `elastic`, where some contact is elastic,
+/// keeps the energy of elastic impacts (see [`super::elastic_energy`]).
 pub(crate) fn solve_substeps(
     bodies: &mut [SolverBody],
     states: &mut [BodyState],
@@ -50,8 +52,13 @@ pub(crate) fn solve_substeps(
     joints: &mut [JointConstraint],
     rows: &mut [Rows],
     p: &SolveParams,
+    elastic: Option<&mut ElasticEnergy>,
 ) -> u32 {
     let mut not_converged = 0;
+    let mut elastic = elastic.filter(|_| p.restitution);
+    if let Some(e) = elastic.as_deref_mut() {
+        e.record_start(states);
+    }
     let substeps = p.substeps.max(1);
     let h = p.dt / substeps as f32;
     let solve_pass = Pass {
@@ -94,12 +101,18 @@ pub(crate) fn solve_substeps(
         }
     }
     if p.restitution {
+        if let Some(e) = elastic.as_deref_mut() {
+            e.record_before(states);
+        }
         let mut struck = vec![false; states.len()];
         for _ in 0..MAX_RESTITUTION_PASSES {
             if batches.apply_restitution(states, &mut struck, h, p.jitter) <= RESTITUTION_TOLERANCE
             {
                 break;
             }
+        }
+        if let Some(e) = elastic {
+            e.project(bodies, states, &struck, batches, joints, h);
         }
     }
     not_converged
