@@ -6,7 +6,7 @@
 //! fully inelastic.
 mod common;
 use common::*;
-use onyx_physics::glam::Vec3;
+use onyx_physics::glam::{Quat, Vec3};
 use onyx_physics::{
     BodyHandle, ColliderDesc, PhysicsPreset, PhysicsSettings, PhysicsWorld, RigidBodyDesc,
 };
@@ -201,6 +201,73 @@ fn elastic_spheres_of_mixed_sizes_and_masses_keep_their_energy() {
             "{preset}: energy of 50 mixed elastic balls changed by up to {worst} of the start, \
              expected < 5 %"
         );
+    }
+}
+
+/// A frictionless e = 1 box (60 × 40 × 20 cm) dropped from 2.5 m on an e = 1 floor, flat and
+/// tilted three ways, bouncing and tumbling for 20 s: its energy (with the rotation's) stays
+/// within 5 % at balanced and precise (2.8 % and 0.5 % at worst) and 15 % at fast (11.7 %: a
+/// tumbling box at 30 Hz spins 30–40 rad/s, a radian a step). Before each elastic impact's energy was projected back onto its
+/// start it gained up to 2.1× at fast, 1.7× at balanced and precise.
+#[test]
+fn an_elastic_box_tumbling_on_the_floor_keeps_its_energy() {
+    let tilts = [
+        Quat::IDENTITY,
+        Quat::from_rotation_x(0.3),
+        Quat::from_scaled_axis(Vec3::new(0.4, 0.2, 0.7)),
+        Quat::from_scaled_axis(Vec3::new(1.1, -0.5, 0.3)),
+    ];
+    for preset in PhysicsPreset::ALL {
+        let bound = if preset == PhysicsPreset::Fast {
+            0.15
+        } else {
+            0.05
+        };
+        for (k, tilt) in tilts.into_iter().enumerate() {
+            let s = settings(preset, 0.0);
+            let h = s.dt / s.substeps as f32;
+            let mut w = PhysicsWorld::new(s);
+            let floor = w.insert_body(RigidBodyDesc::fixed());
+            w.insert_collider(
+                ColliderDesc::half_space(Vec3::Y)
+                    .restitution(1.0)
+                    .friction(0.0),
+                floor,
+            );
+            let b = w.insert_body(
+                RigidBodyDesc::dynamic()
+                    .translation(Vec3::Y * 2.5)
+                    .rotation(tilt),
+            );
+            w.insert_collider(
+                ColliderDesc::cuboid(0.3, 0.2, 0.1)
+                    .restitution(1.0)
+                    .friction(0.0),
+                b,
+            );
+            // The integrator's energy (semi-implicit Euler's phase included, see
+            // `onyx_physics::solver::elastic_energy::shadow_energy`).
+            let energy = |w: &PhysicsWorld| {
+                let x = w.body(b).unwrap();
+                let (m, v, spin) = (x.mass(), x.linvel(), x.angvel());
+                0.5 * m * v.length_squared()
+                    + 0.5 * spin.dot(x.world_inertia() * spin)
+                    + m * G * x.translation().y
+                    - 0.5 * m * G * h * v.y
+            };
+            let e0 = energy(&w);
+            let mut worst = 0.0f32;
+            for _ in 0..(20.0 / s.dt) as usize {
+                w.step();
+                worst = worst.max((energy(&w) / e0 - 1.0).abs());
+            }
+            println!("{preset}, tilt {k}: energy off by up to {worst:.4} of the start");
+            assert!(
+                worst < bound,
+                "{preset}, tilt {k}: an elastic box's energy changed by up to {worst} of the \
+                 start, expected < {bound}"
+            );
+        }
     }
 }
 
