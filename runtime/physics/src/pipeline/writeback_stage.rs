@@ -125,6 +125,20 @@ impl PhysicsWorld {
                 let mut pose = motion.pose_at(t, Vec3::ZERO);
                 pose.translation += carry;
                 self.end_poses[k] = pose;
+                // Stopped short of where the solver left it, the body keeps the energy it
+                // has there (as a rebound does, see `solver::restitution`):
+                // `v′² = v² + 2·a·(x_stop − x_end)`. Kept at its speed, a ball the solver
+                // had already bounced off the floor was raised by the stop distance each
+                // time, and 50 elastic balls with CCD on gained 5 % of their energy over
+                // 10,000 steps at fast.
+                let sb = &self.solver_bodies[k];
+                let rise = Vec3::from(sb.lin_acc * sb.lin_mask)
+                    .dot(motion.com0 + motion.displacement() * t + carry - motion.com1);
+                let st = &mut self.solver_states[k];
+                let v2 = st.v.length_squared();
+                if v2 > 0.0 && rise != 0.0 {
+                    st.v *= ((v2 + 2.0 * rise).max(0.0) / v2).sqrt();
+                }
             }
         }
         // Pass 3: commit.
