@@ -152,3 +152,102 @@ fn a_thousand_to_one_box_on_a_box_holds_or_is_reported_at_every_preset() {
         }
     }
 }
+
+/// 50 elastic balls of radii 10–20 cm, a third of them with CCD, thrown at up to 3 m/s inside
+/// a closed box of six static walls, every surface e = 1 without friction and the
+/// restitution threshold at 0, all written by a user as a scene file: after 10,000 steps at
+/// every preset the crowd has the energy it started with, within 2 % (the issue's bound for
+/// such a crowd is 5 %; within 4e-5 at every preset when written, with the integrator's
+/// phase; the plain energy swings by 0.2–0.4 % at fast without it).
+#[test]
+fn an_elastic_crowd_in_a_closed_box_keeps_its_energy_at_every_preset() {
+    let (g, half, wall) = (9.81f32, 2.0f32, 0.25f32);
+    let mut entities = Vec::new();
+    for axis in 0..3 {
+        for side in [-1.0f32, 1.0] {
+            let mut he = [half + 2.0 * wall; 3];
+            he[axis] = wall;
+            let mut c = [0.0f32; 3];
+            c[axis] = side * (half + wall);
+            entities.push(format!(
+                "(transform: Some((translation: ({:?}, {:?}, {:?}))), collider: Some((shape: \
+                 Box(half_extents: ({:?}, {:?}, {:?})), restitution: 1.0, friction: 0.0)))",
+                c[0], c[1], c[2], he[0], he[1], he[2]
+            ));
+        }
+    }
+    // splitmix64: a start of the crowd that the engine was not tuned on.
+    let mut state = 0x5EED_u64;
+    let mut uniform = |lo: f32, hi: f32| {
+        state = state.wrapping_add(0x9E37_79B9_7F4A_7C15);
+        let mut z = state;
+        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
+        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
+        lo + (hi - lo) * ((z ^ (z >> 31)) >> 40) as f32 / (1u64 << 24) as f32
+    };
+    // Name, radius, start position and velocity.
+    let mut balls = Vec::new();
+    for i in 0..50 {
+        let (gx, gy, gz) = ((i % 5) as f32, ((i / 5) % 2) as f32, (i / 10) as f32);
+        let r = uniform(0.1, 0.2);
+        let p = Vec3::new(
+            -1.6 + 0.8 * gx + uniform(-0.15, 0.15),
+            -1.0 + 1.2 * gy + uniform(-0.15, 0.15),
+            -1.6 + 0.8 * gz + uniform(-0.15, 0.15),
+        );
+        let v = Vec3::new(uniform(-3.0, 3.0), uniform(-3.0, 3.0), uniform(-3.0, 3.0));
+        entities.push(format!(
+            "(name: Some(\"ball {i}\"), transform: Some((translation: ({:?}, {:?}, {:?}))), \
+             rigid_body: Some((kind: Dynamic, can_sleep: false, ccd: {}, linear_velocity: \
+             ({:?}, {:?}, {:?}))), collider: Some((shape: Sphere(radius: {r:?}), restitution: \
+             1.0, friction: 0.0)))",
+            p.x,
+            p.y,
+            p.z,
+            i % 3 == 0,
+            v.x,
+            v.y,
+            v.z
+        ));
+        balls.push((format!("ball {i}"), r, p, v));
+    }
+    let scene = format!(
+        "(version: 3, physics: Some((preset: Balanced, restitution_threshold: Some(0.0))), \
+         entities: [{}])",
+        entities.join(",\n")
+    );
+    // Kinetic and potential energy (from the floor) of balls of equal density, in units of
+    // the density: the mass is ∝ r³. `lead` is how far the stored velocity leads the
+    // instantaneous one in y (half a substep of gravity, semi-implicit Euler).
+    let energy = |state: &[(f32, Vec3, Vec3)], lead: f32| -> f32 {
+        state
+            .iter()
+            .map(|&(r, p, v)| {
+                let v = Vec3::new(v.x, v.y - lead, v.z);
+                r * r * r * (0.5 * v.length_squared() + g * (p.y + half))
+            })
+            .sum()
+    };
+    for preset in PhysicsPreset::ALL {
+        let h = 1.0 / (preset.step_hz() * preset.substeps() as f32);
+        let start: Vec<_> = balls.iter().map(|(_, r, p, v)| (*r, *p, *v)).collect();
+        let (bodies, _) = run(&scene, preset, 10_000);
+        let end: Vec<_> = balls
+            .iter()
+            .map(|(name, r, _, _)| {
+                let (_, p, v) = body(&bodies, name);
+                (*r, *p, *v)
+            })
+            .collect();
+        let inside = end
+            .iter()
+            .all(|(r, p, _)| p.abs().max_element() < half - r + 0.01);
+        let change = energy(&end, 0.5 * g * h) / energy(&start, 0.5 * g * h) - 1.0;
+        println!("{preset}: the crowd's energy changed by {change:+.2e} of its start");
+        assert!(
+            inside && change.abs() < 0.02,
+            "{preset}: after 10,000 steps the elastic crowd's energy changed by {change} of \
+             its start (bound 2 %), every ball inside the box: {inside}"
+        );
+    }
+}
