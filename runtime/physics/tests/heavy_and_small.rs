@@ -268,3 +268,55 @@ fn an_impact_is_not_reported_as_an_overloaded_contact() {
         );
     }
 }
+
+/// A heavy box on a light one on the ground, friction 0.5 everywhere, the light box pushed
+/// sideways with 30 % of the force ground friction holds under the pair's whole weight: it
+/// must not slide. Open (issue 15): the heavy-on-light mass scaling (`support_mass_scale`)
+/// solves the light box as if it were `max_support_mass_ratio` (10) times lighter than the
+/// heavy one, so its ground contact carries about `(1 + 10)·m_light·g`, not the pair's
+/// weight, and the friction under it is as much too weak: 100:1 slides 270 m in 2 s and
+/// 1000:1 1.6 km at every preset; 30:1 holds at balanced and precise (2 cm, 0.4 mm). At fast
+/// 9:1 to 30:1 slide 7 cm to 2.8 m as well, below the scaling's threshold: one iteration a
+/// substep carries the heavy box's weight down to the ground too slowly for its friction.
+/// Run with `--ignored` to see it.
+#[test]
+#[ignore = "open: the ground under a heavily loaded light body carries too little load for friction"]
+fn a_light_box_under_a_heavy_one_holds_friction_for_the_pair() {
+    for preset in PhysicsPreset::ALL {
+        for ratio in [10.0f32, 100.0, 1000.0] {
+            let mut w = PhysicsWorld::new(settings(preset));
+            let g = w.insert_body(RigidBodyDesc::fixed());
+            w.insert_collider(
+                ColliderDesc::cuboid(10.0, 0.5, 10.0)
+                    .translation(Vec3::Y * -0.5)
+                    .friction(0.5),
+                g,
+            );
+            let h = 0.2;
+            let light = w.insert_body(RigidBodyDesc::dynamic().translation(Vec3::Y * h));
+            w.insert_collider(ColliderDesc::cuboid(h, h, h).friction(0.5), light);
+            let heavy = w.insert_body(RigidBodyDesc::dynamic().translation(Vec3::Y * 3.0 * h));
+            w.insert_collider(
+                ColliderDesc::cuboid(h, h, h)
+                    .friction(0.5)
+                    .density(1000.0 * ratio),
+                heavy,
+            );
+            let total = w.body(light).unwrap().mass() + w.body(heavy).unwrap().mass();
+            let push = 0.3 * 0.5 * total * G;
+            let settle = (0.5 / w.settings().dt) as usize;
+            run(&mut w, settle);
+            let x0 = w.body(light).unwrap().translation().x;
+            for _ in 0..(2.0 / w.settings().dt) as usize {
+                w.body_mut(light).unwrap().add_force(Vec3::X * push);
+                w.step();
+            }
+            let slid = w.body(light).unwrap().translation().x - x0;
+            assert!(
+                slid.abs() < 0.01,
+                "{preset}, {ratio}:1: pushed with 30 % of the pair's friction, the light box \
+                 slid {slid} m in 2 s"
+            );
+        }
+    }
+}
