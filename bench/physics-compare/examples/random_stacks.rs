@@ -3,7 +3,8 @@
 //! stack in equilibrium), run for 20 s in both engines at each preset, with friction 0.5 and
 //! without. Prints, per stack, the largest sideways drift of any box; a stack counts as
 //! toppled past 10 cm sideways or 5 cm down. The same stacks as
-//! `runtime/physics/tests/stacking.rs` (its generator and seed).
+//! `runtime/physics/tests/stacking.rs`: its generator and seed, copied, since the physics
+//! tests cannot use this crate without building rapier for them.
 //!
 //! `cargo run --release -p onyx-physics-bench --example random_stacks -- [count] [margin_m] [seed]`
 
