@@ -66,9 +66,12 @@ pub struct PhysicsSettings {
     /// true masses.
     /// Default: `10`
     /// Too high (or 0, off): a heavy body on a light one rings into it for `√ratio`
-    /// substeps and sinks about `g·ratio·h²` (17 cm for 1000:1 at balanced). Too low: the
-    /// light body passes on visibly less of the heavy one's weight (its contact with the
-    /// ground reports less force; it slides more easily under friction).
+    /// substeps and sinks about `g·ratio·h²` (17 cm for 1000:1 at balanced). The cost, at
+    /// any value: the light body passes on only about `(1 + ratio)` times its own weight, so
+    /// its supports report less force and their friction holds less (at 10, a 1 kg box under
+    /// 100 kg slides under 30 % of the pair's friction; open, see
+    /// `tests/heavy_and_small.rs`). Lower values hold the tilt of off-centre loads at `fast`
+    /// better and make that worse.
     pub max_support_mass_ratio: f32,
     /// Contact distance tolerance, metres: the CCD stop distance and the hysteresis for
     /// ending contact events. (The solver has no penetration dead zone: resting bodies sink
