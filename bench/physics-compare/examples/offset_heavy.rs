@@ -35,10 +35,7 @@ fn main() {
     let offsets = [0.0f32, 0.01, 0.03, 0.06, 0.1];
     println!("offsets {offsets:?} m; each cell: onyx depth/tilt, rapier depth/tilt");
     for preset in PhysicsPreset::ALL {
-        let s = StepSettings {
-            hz: preset.step_hz(),
-            iterations: preset.substeps(),
-        };
+        let s = StepSettings::of_preset(preset);
         for ratio in [1.0f32, 3.0, 10.0, 30.0, 100.0, 1000.0] {
             let mut line = format!("{preset:<8} {ratio:>5}:1");
             for &offset in &offsets {

@@ -112,10 +112,7 @@ fn main() {
         .map(|k| random_stack(&mut rng, 3 + k % 3, margin))
         .collect();
     for preset in PhysicsPreset::ALL {
-        let s = StepSettings {
-            hz: preset.step_hz(),
-            iterations: preset.substeps(),
-        };
+        let s = StepSettings::of_preset(preset);
         for friction in [0.5, 0.0] {
             let mut toppled = [0usize; 2];
             let mut line = format!("{preset:<8} friction {friction}:");

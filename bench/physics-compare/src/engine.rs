@@ -102,6 +102,15 @@ impl StepSettings {
         iterations: 8,
     };
 
+    /// The setting of an Onyx preset: its step rate, and its substeps as the iterations.
+    #[must_use]
+    pub fn of_preset(p: onyx_physics::PhysicsPreset) -> Self {
+        Self {
+            hz: p.step_hz(),
+            iterations: p.substeps(),
+        }
+    }
+
     /// Step length, seconds.
     #[must_use]
     pub fn dt(self) -> f32 {

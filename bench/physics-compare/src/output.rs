@@ -212,7 +212,7 @@ fn write_joint_cost(s: &mut String, rows: &[Row], scene: &str) {
 pub fn preset_at(s: StepSettings) -> Option<PhysicsPreset> {
     PhysicsPreset::ALL
         .into_iter()
-        .find(|p| p.step_hz() == s.hz && p.substeps() == s.iterations)
+        .find(|&p| StepSettings::of_preset(p) == s)
 }
 
 /// The "Presets" section: per scene, each preset's cost and error in Onyx next to rapier at
