@@ -62,16 +62,16 @@ pub struct PhysicsSettings {
     pub max_penetration_fraction: f32,
     /// Largest mass ratio a resting contact between two dynamic bodies is solved with: the
     /// lighter body's inverse mass is scaled down in that contact so that it looks at most
-    /// this many times lighter (see the solve stage's `support_mass_scale`). Impacts use the
-    /// true masses.
-    /// Default: `10`
+    /// this many times lighter (see `pipeline/heavy_on_light.rs`). Impacts and elastic pairs
+    /// use the true masses; the friction under the light body is given the load the scaling
+    /// keeps from it.
+    /// Default: `3`
     /// Too high (or 0, off): a heavy body on a light one rings into it for `√ratio`
-    /// substeps and sinks about `g·ratio·h²` (17 cm for 1000:1 at balanced). The cost, at
-    /// any value: the light body passes on only about `(1 + ratio)` times its own weight, so
-    /// its supports report less force and their friction holds less (at 10, a 1 kg box under
-    /// 100 kg slides under 30 % of the pair's friction; open, see
-    /// `tests/heavy_and_small.rs`). Lower values hold the tilt of off-centre loads at `fast`
-    /// better and make that worse.
+    /// substeps and sinks about `g·ratio·h²` (17 cm for 1000:1 at balanced), and at fast an
+    /// off-centre load from 10× the light body's mass up tips the pair over (at 10, a 1 cm
+    /// offset tilted it 0.18 rad and a 6 cm one fell). Too low: the light body feels less of
+    /// the heavy one's moment, and tips under a sideways push at its centre past about
+    /// `(1 + 2·ratio)` times its own weight (open, see `tests/heavy_and_small.rs`).
     pub max_support_mass_ratio: f32,
     /// Contact distance tolerance, metres: the CCD stop distance and the hysteresis for
     /// ending contact events. (The solver has no penetration dead zone: resting bodies sink
@@ -270,7 +270,7 @@ impl Default for PhysicsSettings {
             contact_damping_ratio: 5.0,
             max_contact_push_speed: 3.0,
             max_penetration_fraction: 0.02,
-            max_support_mass_ratio: 10.0,
+            max_support_mass_ratio: 3.0,
             linear_slop: 0.001,
             speculative_distance: 0.02,
             max_speculative_distance: 0.5,

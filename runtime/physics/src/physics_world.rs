@@ -63,6 +63,8 @@ pub struct PhysicsWorld {
     pub(crate) contact_batches: crate::solver::batching::ContactBatches,
     /// The energy of elastic impacts, kept between steps for its buffers.
     pub(crate) elastic_energy: crate::solver::elastic_energy::ElasticEnergy,
+    /// The friction bounds the heavy-on-light scaling hides (see `HiddenLoads`).
+    pub(crate) hidden_loads: crate::pipeline::heavy_on_light::HiddenLoads,
     pub(crate) new_pairs: Vec<(u32, u32)>,
     /// Arena indices of the bodies that take part in this step (awake, not static, not
     /// quarantined), gathered by the pre-step and by wake-ups; sleeping bodies are not in it.
@@ -133,6 +135,7 @@ impl PhysicsWorld {
             solver_slots: Vec::new(),
             contact_batches: Default::default(),
             elastic_energy: Default::default(),
+            hidden_loads: Default::default(),
             new_pairs: Vec::new(),
             deepest_contact: Vec::new(),
             active_bodies: Vec::new(),

@@ -281,37 +281,154 @@ fn an_impact_is_not_reported_as_an_overloaded_contact() {
     }
 }
 
-/// A heavy box on a light one on the ground (40 cm cubes, [`heavy_on_light_world`]), the
-/// light box pushed sideways with 30 % of the force the ground's sliding friction holds under
-/// the pair's whole weight: it must not slide. Open (issue 15): the heavy-on-light mass
-/// scaling (`support_mass_scale`) solves the light box as if it were
-/// `max_support_mass_ratio` (10) times lighter than the heavy one, so its ground contact
-/// carries about `(1 + 10)·m_light·g`, not the pair's weight, and the friction under it is as
-/// much too weak: 100:1 slid 270 m in 2 s and 1000:1 1.6 km at every preset; 30:1 held at
-/// balanced and precise (6 mm, 0.4 mm). At fast 9:1 to 30:1 slid 6 cm to 5.7 m as well,
-/// below the scaling's threshold: one iteration a substep carries the heavy box's weight
-/// down to the ground too slowly for its friction. Run with `--ignored` to see it.
+/// Sliding friction of the default material, and 30 % of what it holds under `mass`.
+fn gentle_push(mass: f32) -> f32 {
+    0.3 * onyx_physics::Material::default().dynamic_friction * mass * G
+}
+
+/// How far the light and the heavy box of `w` slide along x in 2 s, and the light box's
+/// tilt (rad), with `force(w)` applied before each step.
+fn slide(
+    w: &mut PhysicsWorld,
+    light: BodyHandle,
+    heavy: BodyHandle,
+    mut force: impl FnMut(&mut PhysicsWorld),
+) -> (f32, f32, f32) {
+    let x = |w: &PhysicsWorld, b| w.body(b).unwrap().translation().x;
+    let (l0, h0) = (x(w, light), x(w, heavy));
+    for _ in 0..(2.0 / w.settings().dt) as usize {
+        force(w);
+        w.step();
+    }
+    let tilt = w.body(light).unwrap().rotation().to_axis_angle().1;
+    (x(w, light) - l0, x(w, heavy) - h0, tilt)
+}
+
+/// A heavy box on a light one (40 cm cubes, [`heavy_on_light_world`]) loaded sideways from
+/// above: on an incline at half its friction angle (gravity tilted), and with the heavy box
+/// pushed with 30 % of the force the pair's sliding friction holds. The light box carries
+/// the load to the ground through friction at both faces; it must neither slide nor tip.
+/// At fast, from 10:1 up the light box tipped over on its edge (the heavy one's off-centre
+/// load rang on it for the one iteration a substep); `max_support_mass_ratio` 3 (was 10)
+/// solves such a pair as 3:1, which holds.
 #[test]
-#[ignore = "open: the ground under a heavily loaded light body carries too little load for friction"]
-fn a_light_box_under_a_heavy_one_holds_friction_for_the_pair() {
-    let sliding_friction = onyx_physics::Material::default().dynamic_friction;
+fn a_heavy_box_on_a_light_one_holds_when_loaded_sideways_from_above() {
+    for preset in PhysicsPreset::ALL {
+        let (max_slide, max_tilt) = if preset == PhysicsPreset::Fast {
+            (0.03, 0.1)
+        } else {
+            (0.005, 0.02)
+        };
+        for ratio in [1.0f32, 3.0, 10.0, 100.0, 1000.0] {
+            for incline in [true, false] {
+                let (mut w, light, heavy, _) = heavy_on_light_world(preset, ratio, 0.2, 0.2);
+                let settle = (0.5 / w.settings().dt) as usize;
+                run(&mut w, settle);
+                let mass = w.body(light).unwrap().mass() + w.body(heavy).unwrap().mass();
+                let (slid_light, slid_heavy, tilt) = if incline {
+                    let slope = (0.5 * onyx_physics::Material::default().dynamic_friction).atan();
+                    w.settings_mut().gravity = Vec3::new(G * slope.sin(), -G * slope.cos(), 0.0);
+                    slide(&mut w, light, heavy, |_| {})
+                } else {
+                    slide(&mut w, light, heavy, |w| {
+                        w.body_mut(heavy)
+                            .unwrap()
+                            .add_force(Vec3::X * gentle_push(mass));
+                    })
+                };
+                let how = if incline { "on an incline" } else { "pushed" };
+                assert!(
+                    slid_light.abs() < max_slide && slid_heavy.abs() < max_slide,
+                    "{preset}, {ratio}:1 {how}: slid {slid_light} m (light), {slid_heavy} m (heavy)"
+                );
+                assert!(
+                    tilt < max_tilt,
+                    "{preset}, {ratio}:1 {how}: the light box tilted {tilt} rad"
+                );
+            }
+        }
+    }
+}
+
+/// A light box (and a column of two) under a heavy one, the bottom box pushed sideways:
+/// the ground's friction must hold the whole column's weight. The heavy-on-light scaling
+/// (`support_mass_scale`) solves the light box as if it were `max_support_mass_ratio` (3)
+/// times lighter than the heavy one, so the normal rows under a column of `n` light boxes
+/// carry only about `(n + ratio)·m·g`. The push is 30 % of what the ground's sliding
+/// friction holds under the column, but at most `0.6·(n + ratio)·m·g`, more than those
+/// rows' own friction holds (`0.5·(n + ratio)·m·g`) and less than tips the light box (see
+/// the ignored test below). Before the hidden load was given to the friction of the
+/// supports (`HiddenLoads`) the single box slid 1.9–2.0 m in 2 s at fast and balanced
+/// (3 cm at precise) at 100:1 and 1000:1; before it was passed down the column, the
+/// column's bottom box slid 2 m at fast and 3–5 cm at balanced and precise.
+#[test]
+fn the_ground_under_a_light_box_holds_the_heavy_one_s_weight_in_friction() {
+    for preset in PhysicsPreset::ALL {
+        for ratio in [10.0f32, 100.0, 1000.0] {
+            for column in [1usize, 2] {
+                let (mut w, light, heavy, _) = heavy_on_light_world(preset, ratio, 0.2, 0.2);
+                let bottom = if column == 2 {
+                    push_under(&mut w, light, heavy)
+                } else {
+                    light
+                };
+                let cap = w.settings().max_support_mass_ratio;
+                let settle = (0.5 / w.settings().dt) as usize;
+                run(&mut w, settle);
+                let m = w.body(light).unwrap().mass();
+                let mass = column as f32 * m + w.body(heavy).unwrap().mass();
+                let push = gentle_push(mass).min(0.6 * (column as f32 + cap) * m * G);
+                let (slid, _, _) = slide(&mut w, bottom, heavy, move |w| {
+                    w.body_mut(bottom).unwrap().add_force(Vec3::X * push);
+                });
+                assert!(
+                    slid.abs() < 0.01,
+                    "{preset}, {ratio}:1, a column of {column}: pushed with {push} N, the \
+                     bottom box slid {slid} m in 2 s"
+                );
+            }
+        }
+    }
+}
+
+/// Puts a copy of `light` under it (and lifts it and `heavy` by its height), returning the
+/// new bottom box.
+fn push_under(w: &mut PhysicsWorld, light: BodyHandle, heavy: BodyHandle) -> BodyHandle {
+    let half = 0.2;
+    for b in [light, heavy] {
+        let p = w.body(b).unwrap().translation();
+        w.body_mut(b)
+            .unwrap()
+            .set_translation(p + Vec3::Y * 2.0 * half);
+    }
+    let bottom = w.insert_body(RigidBodyDesc::dynamic().translation(Vec3::Y * half));
+    w.insert_collider(
+        ColliderDesc::cuboid(half, half, half).density(1000.0),
+        bottom,
+    );
+    bottom
+}
+
+/// The light box of [`heavy_on_light_world`] pushed with 30 % of the pair's sliding
+/// friction: open (issue 15). Past `max_support_mass_ratio` the heavy box's moment on the
+/// light one is scaled with its inverse mass, so the push's tilt is held by about
+/// `(1 + 2·ratio)·m·g` of load: at 100:1 and 1000:1 the light box tips over and is squeezed
+/// out (214 m and 1.6 km in 2 s). Run with `--ignored` to see it.
+#[test]
+#[ignore = "open: a light box under a heavy one tips under a sideways push past (1 + 2·ratio) times its weight"]
+fn a_light_box_under_a_heavy_one_pushed_with_30_percent_of_the_pairs_friction_holds() {
     for preset in PhysicsPreset::ALL {
         for ratio in [10.0f32, 100.0, 1000.0] {
             let (mut w, light, heavy, _) = heavy_on_light_world(preset, ratio, 0.2, 0.2);
-            let total = w.body(light).unwrap().mass() + w.body(heavy).unwrap().mass();
-            let push = 0.3 * sliding_friction * total * G;
             let settle = (0.5 / w.settings().dt) as usize;
             run(&mut w, settle);
-            let x0 = w.body(light).unwrap().translation().x;
-            for _ in 0..(2.0 / w.settings().dt) as usize {
+            let push = gentle_push(w.body(light).unwrap().mass() + w.body(heavy).unwrap().mass());
+            let (slid, _, _) = slide(&mut w, light, heavy, move |w| {
                 w.body_mut(light).unwrap().add_force(Vec3::X * push);
-                w.step();
-            }
-            let slid = w.body(light).unwrap().translation().x - x0;
+            });
             assert!(
                 slid.abs() < 0.01,
-                "{preset}, {ratio}:1: pushed with 30 % of the pair's sliding friction, the \
-                 light box slid {slid} m in 2 s"
+                "{preset}, {ratio}:1: the light box slid {slid} m in 2 s"
             );
         }
     }

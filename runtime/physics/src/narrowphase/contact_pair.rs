@@ -79,4 +79,10 @@ impl ContactPair {
     pub fn point_count(&self) -> usize {
         self.manifolds.iter().map(|m| m.points.len()).sum()
     }
+
+    /// Restitution 1 and no friction: the pair's contacts can do no work (see
+    /// `solver::elastic_energy`).
+    pub(crate) fn elastic(&self) -> bool {
+        self.restitution >= 1.0 && self.static_friction == 0.0 && self.dynamic_friction == 0.0
+    }
 }

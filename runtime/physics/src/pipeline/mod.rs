@@ -3,6 +3,7 @@
 mod broadphase_stage;
 pub mod ccd;
 mod contact_report_stage;
+pub(crate) mod heavy_on_light;
 pub mod joint_stage;
 mod jointed_masses;
 mod narrowphase_stage;

@@ -2,6 +2,7 @@
 
 use glam::{Vec3, Vec3A};
 
+use super::heavy_on_light::support_mass_scale;
 use super::resting_accelerations::RestingAccelerations;
 use crate::body_type::BodyType;
 use crate::locked_axes::LockedAxes;
@@ -90,6 +91,8 @@ impl PhysicsWorld {
         self.solver_bodies.push(SolverBody::STATIC);
         self.solver_states.push(BodyState::STATIC);
         self.solver_handles.push(u32::MAX);
+        // The range of the awake dynamic bodies' inverse masses (see `HiddenLoads`).
+        let (mut min_inv_mass, mut max_inv_mass) = (f32::INFINITY, 0.0f32);
         for &i in &self.active_bodies {
             let Some(b) = self.bodies.arena.get_by_index_mut(i) else {
                 continue;
@@ -132,6 +135,10 @@ impl PhysicsWorld {
             } else {
                 (Vec3A::ZERO, Vec3A::ZERO)
             };
+            if dynamic && b.inv_mass > 0.0 {
+                min_inv_mass = min_inv_mass.min(b.inv_mass);
+                max_inv_mass = max_inv_mass.max(b.inv_mass);
+            }
             self.solver_states.push(BodyState {
                 v: (b.linvel * if dynamic { lin_mask } else { Vec3::ONE }).into(),
                 w: (b.angvel * if dynamic { ang_mask } else { Vec3::ONE }).into(),
@@ -208,9 +215,7 @@ impl PhysicsWorld {
                 continue;
             }
             bouncy |= pair.restitution > 0.0;
-            elastic |= pair.restitution >= 1.0
-                && pair.static_friction == 0.0
-                && pair.dynamic_friction == 0.0;
+            elastic |= pair.elastic();
             for (mi, m) in pair.manifolds.iter().enumerate() {
                 if m.points.is_empty() {
                     continue;
@@ -249,6 +254,27 @@ impl PhysicsWorld {
                 .map(|j| (j.body_a, j.body_b)),
             mass_of,
         );
+        // Only where some awake body is more than the ratio heavier than another (the
+        // scaling is off below a ratio of 1).
+        if s.max_support_mass_ratio >= 1.0 && max_inv_mass > min_inv_mass * s.max_support_mass_ratio
+        {
+            let (arena, handles) = (&self.bodies.arena, &self.solver_handles);
+            self.hidden_loads.update(
+                &self.manifold_refs,
+                &self.narrowphase.pairs,
+                &self.solver_states,
+                &s,
+                |i| {
+                    handles
+                        .get(i as usize)
+                        .and_then(|&h| arena.get_by_index(h))
+                        .map_or(0.0, |b| -s.gravity.dot(b.pose.translation))
+                },
+            );
+        } else {
+            self.hidden_loads.clear();
+        }
+        let hidden = &self.hidden_loads;
         let resting = if bouncy {
             RestingAccelerations::new(
                 &mut self.manifold_refs,
@@ -292,14 +318,12 @@ impl PhysicsWorld {
                     bounce_accel: 0.0,
                     pressing: [Vec3A::ZERO; 2],
                     load_level_share: 0.0,
-                    mass_scale: support_mass_scale(
-                        &states[r.body_a as usize],
-                        &states[r.body_b as usize],
-                        n,
-                        s.gravity,
-                        s.max_support_mass_ratio,
-                        s.dt,
-                    ),
+                    mass_scale: support_mass_scale(pair, r, states, &s),
+                    friction_load: hidden.factor(if s.gravity.dot(n) < 0.0 {
+                        r.body_b
+                    } else {
+                        r.body_a
+                    }),
                     softness: Softness::RIGID,
                     count: r.count,
                     friction: FrictionPart::default(),
@@ -357,9 +381,7 @@ impl PhysicsWorld {
                     // Elastic: no point's impact was made inelastic by the threshold (one
                     // that bounces without it but not with it).
                     let threshold = s.restitution_threshold;
-                    c.elastic = pair.restitution >= 1.0
-                        && pair.static_friction == 0.0
-                        && pair.dynamic_friction == 0.0
+                    c.elastic = pair.elastic()
                         && points[..count].iter().all(|cp| {
                             cp.restitution_velocity > 0.0
                                 || threshold == 0.0
@@ -557,47 +579,5 @@ impl PhysicsWorld {
                 let pushing = m.points.iter().any(|p| p.max_normal_impulse > 0.0);
                 pair.solved_pushing = Some(pair.solved_pushing == Some(true) || pushing);
             });
-    }
-}
-
-/// Inverse-mass factors for a contact in which a dynamic body rests on one more than
-/// `max_ratio` times lighter (the heavy one above it along gravity, the two approaching
-/// slower than gravity's pull over one step): the light body's inverse mass and inertia are
-/// scaled so that the contact sees at most `max_ratio`.
-///
-/// Gauss–Seidel with warm starting builds a contact's impulse by about the light body's
-/// momentum per substep, so a body `r` times heavier is caught only after `√r` substeps of
-/// ringing: it sinks about `g·r·h²` (17 cm for 1000:1 at 240 Hz), whatever the contact's
-/// stiffness. Seen at `max_ratio`, the ringing is `√(r / max_ratio)` times shorter. The
-/// light body then passes on less of the heavy one's weight than it carries (its own
-/// support holds less than the full load), so this is kept to a heavy body resting on a
-/// light one: impacts, and light bodies on heavy ones, use the true masses.
-fn support_mass_scale(
-    a: &BodyState,
-    b: &BodyState,
-    n: Vec3,
-    gravity: Vec3,
-    max_ratio: f32,
-    dt: f32,
-) -> [f32; 2] {
-    let (ia, ib) = (a.inv_mass.max_element(), b.inv_mass.max_element());
-    // Most pairs: masses within the ratio (or a static or kinematic body), nothing to do.
-    if !(ia > ib * max_ratio || ib > ia * max_ratio) || ia == 0.0 || ib == 0.0 {
-        return [1.0; 2];
-    }
-    let g = gravity.length();
-    if !(max_ratio >= 1.0 && g > 0.0) {
-        return [1.0; 2];
-    }
-    // Resting: not approaching faster than gravity's pull over a step (16 cm/s at 60 Hz).
-    let approach = (Vec3::from(b.v) - Vec3::from(a.v)).dot(n);
-    let b_above = gravity.dot(n) < 0.0;
-    // The light body (larger inverse mass) must be the lower one.
-    if b_above && ia > ib * max_ratio && approach > -g * dt {
-        [ib * max_ratio / ia, 1.0]
-    } else if !b_above && ib > ia * max_ratio && approach > -g * dt {
-        [1.0, ia * max_ratio / ib]
-    } else {
-        [1.0; 2]
     }
 }
