@@ -82,6 +82,7 @@ impl ContactPair {
 
     /// Restitution 1 and no friction: the pair's contacts can do no work (see
     /// `solver::elastic_energy`).
+    #[inline]
     pub(crate) fn elastic(&self) -> bool {
         self.restitution >= 1.0 && self.static_friction == 0.0 && self.dynamic_friction == 0.0
     }

@@ -26,6 +26,7 @@ use crate::solver::contact_constraint::ManifoldRef;
 /// use the true masses. So do elastic pairs ([`ContactPair::elastic`]), whose energy is
 /// kept on the true masses' (scaled at ratio 3, 50 elastic balls of masses up to 250:1
 /// changed their energy by 22 % at fast).
+#[inline]
 pub(crate) fn support_mass_scale(
     pair: &ContactPair,
     r: &ManifoldRef,
@@ -177,6 +178,7 @@ impl HiddenLoads {
     }
 
     /// The factor on the friction bound of the contacts solver body `body` rests on.
+    #[inline]
     pub(crate) fn factor(&self, body: u32) -> f32 {
         self.factor.get(body as usize).copied().unwrap_or(1.0)
     }
