@@ -308,7 +308,6 @@ mod tests {
                 pressing: [Vec3A::ZERO; 2],
                 load_level_share: 0.0,
                 mass_scale: [1.0; 2],
-                friction_load: 1.0,
                 softness: Softness::RIGID,
                 count: r.count,
                 friction: FrictionPart::default(),

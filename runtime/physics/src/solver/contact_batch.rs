@@ -486,7 +486,7 @@ impl<const N: usize, M: ManifoldRows, L: Levers<N>> ContactBatch<N, M, L> {
             set(&mut lanes.restitution_impulse, l, 0.0);
         }
         let f = &c.friction;
-        set(&mut self.friction, l, f.friction * c.friction_load);
+        set(&mut self.friction, l, f.friction);
         for k in 0..2 {
             set(&mut self.tangent_impulse[k], l, f.tangent_impulse[k]);
         }

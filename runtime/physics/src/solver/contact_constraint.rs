@@ -156,9 +156,6 @@ pub(crate) struct ContactConstraint {
     /// Factors on each body's inverse mass and inertia in this manifold's rows (1 but for
     /// the light body of a resting contact past `PhysicsSettings::max_support_mass_ratio`).
     pub mass_scale: [f32; 2],
-    /// Factor on the friction bound `μ·Σλₙ` (and the twist's): 1 but under a body holding a
-    /// heavy one past `max_support_mass_ratio` (see `HiddenLoads`).
-    pub friction_load: f32,
     pub softness: Softness,
     pub count: u8,
     /// Friction at the manifold centre.
