@@ -60,6 +60,17 @@ pub(crate) fn support_mass_scale(
     }
 }
 
+/// The two bodies of a manifold with normal `n` (from `a` to `b`) as (upper, lower): the one
+/// above the other along `gravity` first.
+#[inline]
+pub(crate) fn upper_lower(gravity: Vec3, n: Vec3, a: u32, b: u32) -> (u32, u32) {
+    if gravity.dot(n) < 0.0 {
+        (b, a)
+    } else {
+        (a, b)
+    }
+}
+
 /// Per solver body, the factor on the friction bound of the contacts it rests on: 1 but
 /// under a light body that [`support_mass_scale`] scales (and under whatever that body
 /// rests on, down to the ground).
@@ -87,10 +98,10 @@ pub(crate) struct HiddenLoads {
     /// Per solver body; empty when no contact of the step is scaled.
     factor: Vec<f32>,
     /// Scratch, kept between steps: per solver body the hidden load and the load of its own
-    /// supports, and the supports as (upper, lower, load).
+    /// supports, and the supports as (upper body's height, upper, lower, load).
     hidden: Vec<f32>,
     carried: Vec<f32>,
-    supports: Vec<(u32, u32, f32)>,
+    supports: Vec<(f32, u32, u32, f32)>,
 }
 
 impl HiddenLoads {
@@ -112,7 +123,6 @@ impl HiddenLoads {
         height: impl Fn(u32) -> f32,
     ) {
         self.factor.clear();
-        let gravity = settings.gravity;
         // A manifold's warm-started load (an impact's impulse is not one).
         let load = |r: &ManifoldRef| -> f32 {
             let m = &pairs[r.pair as usize].manifolds[r.manifold as usize];
@@ -148,20 +158,16 @@ impl HiddenLoads {
         supports.clear();
         for r in refs {
             let normal = pairs[r.pair as usize].manifolds[r.manifold as usize].normal;
-            let (upper, lower) = if gravity.dot(normal) < 0.0 {
-                (r.body_b, r.body_a)
-            } else {
-                (r.body_a, r.body_b)
-            };
+            let (upper, lower) = upper_lower(settings.gravity, normal, r.body_a, r.body_b);
             let p = load(r);
             if dynamic(upper) && p > 0.0 {
                 carried[upper as usize] += p;
-                supports.push((upper, lower, p));
+                supports.push((height(upper), upper, lower, p));
             }
         }
         // Top first: a body's hidden load is whole before it is shared among its supports.
-        supports.sort_by(|x, y| height(y.0).total_cmp(&height(x.0)));
-        for &(upper, lower, p) in supports.iter() {
+        supports.sort_by(|x, y| y.0.total_cmp(&x.0));
+        for &(_, upper, lower, p) in supports.iter() {
             let (u, l) = (upper as usize, lower as usize);
             if hidden[u] > 0.0 && dynamic(lower) {
                 hidden[l] += hidden[u] * p / carried[u];

@@ -2,7 +2,7 @@
 
 use glam::{Vec3, Vec3A};
 
-use super::heavy_on_light::support_mass_scale;
+use super::heavy_on_light::{support_mass_scale, upper_lower};
 use super::resting_accelerations::RestingAccelerations;
 use crate::body_type::BodyType;
 use crate::locked_axes::LockedAxes;
@@ -349,12 +349,7 @@ impl PhysicsWorld {
                     pair.dynamic_friction,
                     s.static_friction_speed,
                 );
-                // The body resting on the other (above it along gravity).
-                let upper = if s.gravity.dot(n) < 0.0 {
-                    r.body_b
-                } else {
-                    r.body_a
-                };
+                let (upper, _) = upper_lower(s.gravity, n, r.body_a, r.body_b);
                 // The friction bound of a support under a scaled light body carries the load
                 // the scaling hides from it (see `HiddenLoads`): folded into the coefficient
                 // (a field of its own in every constraint cost the 100-row pyramid, which has
