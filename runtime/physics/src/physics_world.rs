@@ -80,7 +80,7 @@ pub struct PhysicsWorld {
     /// Scratch of the write-back: each solver body's pose at the end of the step.
     pub(crate) end_poses: Vec<crate::pose::Pose>,
     /// Scratch of the write-back: (solver index, fraction of the step, carry) for CCD hits.
-    pub(crate) ccd_clamps: Vec<(u32, f32, Vec3)>,
+    pub(crate) ccd_clamps: Vec<(u32, f32, Vec3, bool)>,
     pub(crate) next_island: u32,
     pub(crate) time: f64,
 }

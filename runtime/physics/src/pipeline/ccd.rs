@@ -129,6 +129,9 @@ pub(crate) struct Sweep {
     pub hit: Option<BodyHandle>,
     /// Some search hit [`CCD_MAX_ITERATIONS`].
     pub not_converged: bool,
+    /// The hit came from a start in contact or in overlap, where the search bounds the
+    /// translation only (see [`Pair::time_of_impact`]).
+    pub from_contact: bool,
 }
 
 /// One collider of the swept body, ready for the pair searches.
@@ -161,6 +164,7 @@ pub(crate) fn sweep_body(
         t: 1.0,
         hit: None,
         not_converged: false,
+        from_contact: false,
     };
     let Some(b) = bodies.get(body) else {
         return out;
@@ -228,11 +232,12 @@ pub(crate) fn sweep_body(
                 origin,
                 swept: &swept,
             };
-            let (t, capped) = pair.time_of_impact(target, out.t, local_box);
+            let (t, capped, from_contact) = pair.time_of_impact(target, out.t, local_box);
             out.not_converged |= capped;
             if t < out.t {
                 out.t = t;
                 out.hit = Some(other.parent);
+                out.from_contact = from_contact;
             }
             true
         });
@@ -252,19 +257,22 @@ struct Pair<'a> {
 }
 
 impl Pair<'_> {
-    /// Fraction of the step until the pair comes within `target`, at most `t_max`, and
-    /// whether the search was capped.
-    fn time_of_impact(&self, target: f32, t_max: f32, local_box: Aabb) -> (f32, bool) {
+    /// Fraction of the step until the pair comes within `target`, at most `t_max`, whether
+    /// the search was capped, and whether the pair started in contact or overlap (the
+    /// search then bounds the translation only).
+    fn time_of_impact(&self, target: f32, t_max: f32, local_box: Aabb) -> (f32, bool, bool) {
         let a = self.a;
         let Some((d0, _)) = self.distance(0.0, &a.core, a.radius, &a.local) else {
-            return (1.0, false);
+            return (1.0, false, false);
         };
         if d0 > target {
-            return self.advance(target, t_max, &a.core, a.radius, &a.local, true);
+            let (t, capped) = self.advance(target, t_max, &a.core, a.radius, &a.local, true);
+            return (t, capped, false);
         }
         if d0 > 0.0 {
             // Touching at step start: it may slide along, not close more than half the gap.
-            return self.advance(0.5 * d0, t_max, &a.core, a.radius, &a.local, false);
+            let (t, capped) = self.advance(0.5 * d0, t_max, &a.core, a.radius, &a.local, false);
+            return (t, capped, true);
         }
         // Overlapping at step start: sweep the inner core.
         let half = local_box.half_extents();
@@ -280,7 +288,7 @@ impl Pair<'_> {
             if let Some((dc, _)) = self.distance(0.0, &ConvexCore::Point, core_radius, &local) {
                 if dc > 0.0 {
                     let core_target = target.min(0.5 * dc);
-                    return self.advance(
+                    let (t, capped) = self.advance(
                         core_target,
                         t_max,
                         &ConvexCore::Point,
@@ -288,10 +296,11 @@ impl Pair<'_> {
                         &local,
                         false,
                     );
+                    return (t, capped, true);
                 }
             }
         }
-        (1.0, false)
+        (1.0, false, true)
     }
 
     /// Conservative advancement from `t = 0` until the distance is at most `target`. With

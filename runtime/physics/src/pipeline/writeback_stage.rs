@@ -111,12 +111,13 @@ impl PhysicsWorld {
                         }
                         _ => Vec3::ZERO,
                     };
-                    self.ccd_clamps.push((k as u32, sweep.t, carry));
+                    self.ccd_clamps
+                        .push((k as u32, sweep.t, carry, sweep.from_contact));
                     self.output.counters.ccd_hits += 1;
                 }
                 ccd_time += t0.elapsed();
             }
-            for &(k, t, carry) in &self.ccd_clamps {
+            for &(k, t, carry, from_contact) in &self.ccd_clamps {
                 let k = k as usize;
                 let Some(b) = self.bodies.arena.get_by_index(self.solver_handles[k]) else {
                     continue;
@@ -135,6 +136,15 @@ impl PhysicsWorld {
                 let rise = Vec3::from(sb.lin_acc * sb.lin_mask)
                     .dot(motion.com0 + motion.displacement() * t + carry - motion.com1);
                 let st = &mut self.solver_states[k];
+                // From a start in contact the body turned only the fraction `t` of what the
+                // solver turned it, and it keeps only that spin. Left with the whole of it, a
+                // capsule struck off centre by a wall moving into it kept the spin the contact
+                // had given it, stopped again at the start of every step, and the contact held
+                // it by that spin alone (its point moving with the wall, its centre not) while
+                // the wall crept through it.
+                if from_contact {
+                    st.w *= t;
+                }
                 let v2 = st.v.length_squared();
                 if v2 > 0.0 && rise != 0.0 {
                     st.v *= ((v2 + 2.0 * rise).max(0.0) / v2).sqrt();
