@@ -328,3 +328,64 @@ fn a_column_of_twenty_balls_stiffens_its_loaded_contacts() {
         );
     }
 }
+
+/// Columns of equal cubes from 1 mm to 10 m, placed touching: each stands at balanced and
+/// precise with its contacts within 5 % of the cube's size over the last 5 s of 10 s.
+///
+/// Fails: columns of small cubes sway with a growing amplitude and fall (at balanced five
+/// 1 cm cubes and ten 3 cm ones, at precise ten 1 cm or 3 cm ones, and 1 mm columns of five
+/// at both). The model is scale free (a column of 1 cm cubes under g behaves as one of 1 m
+/// cubes under 100 g), and what holds them is a shorter step: 8–32 substeps, a second
+/// iteration or more contact stiffness do not. rapier 0.36 keeps them standing 22–50 % of a
+/// cube deep (its slop is absolute). `cargo run --release -p onyx-physics-bench --example
+/// small_stacks` prints both engines; see docs/physics-accuracy.md, *Where Onyx is behind*.
+#[test]
+#[ignore = "columns of small cubes fall at balanced and precise; open"]
+fn columns_of_small_cubes_stand_at_balanced_and_precise() {
+    let mut failures = Vec::new();
+    for preset in [PhysicsPreset::Balanced, PhysicsPreset::Precise] {
+        for size in [0.001f32, 0.01, 0.03, 0.1, 1.0, 10.0] {
+            for count in [2usize, 5, 10] {
+                let mut w = PhysicsWorld::new(preset.settings());
+                let ground = w.insert_body(RigidBodyDesc::fixed());
+                w.insert_collider(ColliderDesc::half_space(Vec3::Y).friction(0.6), ground);
+                let cubes: Vec<BodyHandle> = (0..count)
+                    .map(|i| {
+                        let b = w.insert_body(
+                            RigidBodyDesc::dynamic()
+                                .translation(Vec3::Y * size * (0.5 + i as f32))
+                                .can_sleep(false),
+                        );
+                        w.insert_collider(
+                            ColliderDesc::cuboid(0.5 * size, 0.5 * size, 0.5 * size).friction(0.6),
+                            b,
+                        );
+                        b
+                    })
+                    .collect();
+                let steps = (10.0 / w.settings().dt) as usize;
+                let mut deepest = 0.0f32;
+                for k in 0..steps {
+                    w.step();
+                    if k >= steps / 2 {
+                        let y = |i: usize| w.body(cubes[i]).unwrap().translation().y;
+                        let mut pen = 0.5 * size - y(0);
+                        for i in 1..count {
+                            pen = pen.max(size - (y(i) - y(i - 1)));
+                        }
+                        deepest = deepest.max(pen);
+                    }
+                }
+                let top = w.body(cubes[count - 1]).unwrap().translation();
+                let side = Vec3::new(top.x, 0.0, top.z).length();
+                if !(side <= 0.2 * size && deepest <= 0.05 * size) {
+                    failures.push(format!(
+                        "{preset} {count} cubes of {size} m: top {side} m aside, deepest contact \
+                         {deepest} m"
+                    ));
+                }
+            }
+        }
+    }
+    assert!(failures.is_empty(), "columns fell: {failures:#?}");
+}
