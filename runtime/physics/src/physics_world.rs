@@ -434,7 +434,8 @@ impl PhysicsWorld {
         }
     }
 
-    /// Recomputes a body's mass properties from its colliders (or its explicit override).
+    /// Recomputes a body's mass properties from its colliders (or its explicit override),
+    /// and its size.
     pub(crate) fn recompute_mass(&mut self, h: BodyHandle) {
         let Some(b) = self.bodies.get(h) else {
             return;
@@ -454,9 +455,17 @@ impl PhysicsWorld {
             }
             acc
         };
+        let size = b
+            .colliders
+            .iter()
+            .filter_map(|&ch| self.colliders.get(ch))
+            .filter(|c| !c.sensor)
+            .map(|c| c.shape.size())
+            .fold(f32::MAX, f32::min);
         let Some(b) = self.bodies.get_mut(h) else {
             return;
         };
+        b.size = size;
         b.mass = mp;
         if b.body_type != BodyType::Dynamic {
             b.mass.local_com = Vec3::ZERO;

@@ -57,6 +57,10 @@ pub struct RigidBody {
     pub(crate) caps_reported: u8,
     /// Already named in `StepOutput::far_bodies`.
     pub(crate) far_reported: bool,
+    /// Smallest dimension of its colliders, metres ([`crate::shape::Shape::size`];
+    /// `f32::MAX` with none): how finely `f32` must place it (see
+    /// [`crate::PhysicsSettings::precise_range_for`]).
+    pub(crate) size: f32,
 }
 
 /// See [`RigidBody::spin_cache`].

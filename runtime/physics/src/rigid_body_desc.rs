@@ -208,6 +208,7 @@ impl RigidBodyDesc {
             spin_cache: None,
             caps_reported: 0,
             far_reported: false,
+            size: f32::MAX,
         };
         b.update_inverse_mass();
         b

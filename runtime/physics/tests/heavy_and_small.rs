@@ -227,6 +227,45 @@ fn bodies_moving_past_the_precise_range_are_named_once() {
     }
 }
 
+/// A small body reaches the edge of what `f32` can place it to sooner: a 1 mm box resting on
+/// a 1 km one, 1,000 m up, sank 7.3 % of itself at balanced (positions there are 61 µm apart,
+/// 6 % of it) and nothing said so. Its range is where positions are spaced at most
+/// `max_penetration_fraction` of it apart: 256 m for 1 mm at 2 %, 2,048 m for 1 cm.
+#[test]
+fn a_small_body_is_named_past_the_range_that_holds_its_size() {
+    let s = PhysicsSettings {
+        gravity: Vec3::ZERO,
+        ..settings(PhysicsPreset::Balanced)
+    };
+    assert_eq!(s.precise_range_for(0.001), 256.0);
+    assert_eq!(s.precise_range_for(0.01), 2_048.0);
+    assert_eq!(s.precise_range_for(1.0), s.precise_range());
+    assert_eq!(s.precise_range_for(f32::MAX), s.precise_range());
+    let mut w = PhysicsWorld::new(s);
+    let mut body = |y: f32, size: f32| {
+        let b = w.insert_body(
+            RigidBodyDesc::dynamic()
+                .translation(Vec3::Y * y)
+                .linvel(Vec3::X),
+        );
+        w.insert_collider(ColliderDesc::cuboid(0.5 * size, 0.5 * size, 0.5 * size), b);
+        b
+    };
+    let tiny_near = body(100.0, 0.001);
+    let tiny_far = body(1_000.0, 0.001);
+    let small_far = body(1_000.0, 0.01);
+    let large_far = body(1_000.0, 1.0);
+    let first = w.step().far_bodies.clone();
+    println!("far bodies: {first:?}");
+    assert_eq!(first.len(), 1, "{first:?}");
+    assert_eq!(first[0].body, tiny_far);
+    assert_eq!(first[0].range, 256.0);
+    assert!((first[0].size - 0.001).abs() < 1e-9);
+    for b in [tiny_near, small_far, large_far] {
+        assert!(first.iter().all(|f| f.body != b));
+    }
+}
+
 #[test]
 fn an_impact_is_not_reported_as_an_overloaded_contact() {
     // Bullets stopped by a 1 cm wall (CCD, no gravity, 300 and 1000 m/s) and balls thrown

@@ -119,10 +119,21 @@ fn speed_cap_sentence(hit: &SpeedCapHit, body: &Named) -> String {
 }
 
 fn far_sentence(far: &FarBody, body: &Named) -> String {
+    // The range of `max_position_spacing`, or a shorter one for a body small enough that
+    // the spacing there is a sizeable part of it.
+    let why = if far.size < f32::MAX {
+        format!(
+            "where f32 positions hold a body {} across to its resting accuracy \
+             (max_position_spacing, max_penetration_fraction)",
+            length(far.size)
+        )
+    } else {
+        "where f32 positions are spaced at most max_position_spacing apart".to_owned()
+    };
     format!(
-        "physics: body {body} moves {:.0} m from the origin, past the precise range of \
-         {:.0} m (max_position_spacing): f32 positions there lose slow motion to rounding; \
-         move the scene nearer the origin",
+        "physics: body {body} is {:.0} m from the origin, past the precise range of {:.0} m \
+         {why}: slow motion and resting contacts there lose accuracy to rounding; move the \
+         scene nearer the origin",
         far.distance, far.range
     )
 }
@@ -149,6 +160,7 @@ mod tests {
                 body,
                 distance: 1.0e6,
                 range: 16384.0,
+                size: 1.0,
             }],
             overloaded_contacts: vec![OverloadedContact {
                 body_a: body,

@@ -152,7 +152,6 @@ impl PhysicsWorld {
             }
         }
         // Pass 3: commit.
-        let range = s.precise_range();
         for k in 1..n {
             let sb = self.solver_bodies[k];
             let st = self.solver_states[k];
@@ -185,14 +184,23 @@ impl PhysicsWorld {
                 }
             }
             if !b.far_reported {
+                // Past the range of `max_position_spacing` or of the body's own size. The range
+                // is at least `spacing / ε` (2²³·spacing): the logarithms only for bodies past that.
                 let distance = pose.translation.abs().max_element();
-                if distance > range {
-                    b.far_reported = true;
-                    self.output.far_bodies.push(FarBody {
-                        body: handle,
-                        distance,
-                        range,
-                    });
+                let spacing = s
+                    .max_position_spacing
+                    .min(s.max_penetration_fraction * b.size);
+                if distance * f32::EPSILON > spacing {
+                    let range = s.precise_range_for(b.size);
+                    if distance > range {
+                        b.far_reported = true;
+                        self.output.far_bodies.push(FarBody {
+                            body: handle,
+                            distance,
+                            range,
+                            size: b.size,
+                        });
+                    }
                 }
             }
             b.linvel = st.v.into();
