@@ -335,10 +335,12 @@ fn a_column_of_twenty_balls_stiffens_its_loaded_contacts() {
 /// Fails: columns of small cubes sway with a growing amplitude and fall (at balanced five
 /// 1 cm cubes and ten 3 cm ones, at precise ten 1 cm or 3 cm ones, and 1 mm columns of five
 /// at both). The model is scale free (a column of 1 cm cubes under g behaves as one of 1 m
-/// cubes under 100 g), and what holds them is a shorter step: 8–32 substeps, a second
-/// iteration or more contact stiffness do not. rapier 0.36 keeps them standing 22–50 % of a
-/// cube deep (its slop is absolute). `cargo run --release -p onyx-physics-bench --example
-/// small_stacks` prints both engines; see docs/physics-accuracy.md, *Where Onyx is behind*.
+/// cubes under 100 g); both a shorter substep and a shorter step hold more of them (five
+/// 1 cm cubes stand at 60 Hz × 8 and 120 × 4, ten 3 cm cubes at 240 × 4 but not 60 × 32),
+/// and a second iteration, stiffness, damping, levelling or friction do not. rapier 0.36
+/// keeps them standing 17–50 % of a cube deep (its slop is absolute). `cargo run --release
+/// -p onyx-physics-bench --example small_stacks` prints both engines; see
+/// docs/physics-accuracy.md, *Where Onyx is behind*.
 #[test]
 #[ignore = "columns of small cubes fall at balanced and precise; open"]
 fn columns_of_small_cubes_stand_at_balanced_and_precise() {
