@@ -252,14 +252,21 @@ impl PhysicsSettings {
     /// [`PhysicsSettings::precise_range`] for a body whose smallest dimension is `size`
     /// metres: where positions are also spaced at most `max_penetration_fraction` of it
     /// apart, the resting accuracy the contacts hold it to (256 m for a 1 mm body at 2 %;
-    /// at 1 km, `f32` spaces its positions 6 % of it apart).
+    /// 1,000 m up, `f32` spaces its positions 6 % of it apart).
     #[must_use]
     pub fn precise_range_for(&self, size: f32) -> f32 {
+        range_of_spacing(self.position_spacing_for(size))
+    }
+
+    /// The coarsest spacing of `f32` positions that holds a body whose smallest dimension
+    /// is `size` metres: `max_position_spacing`, or `max_penetration_fraction` of `size`
+    /// where that is finer.
+    pub(crate) fn position_spacing_for(&self, size: f32) -> f32 {
         let own = self.max_penetration_fraction * size;
         if own > 0.0 && own < self.max_position_spacing {
-            range_of_spacing(own)
+            own
         } else {
-            self.precise_range()
+            self.max_position_spacing
         }
     }
 }

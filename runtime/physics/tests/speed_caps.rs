@@ -106,12 +106,9 @@ fn the_spin_cap_is_reported_as_angular() {
 fn no_step_leaves_a_body_past_a_cap() {
     for preset in onyx_physics::PhysicsPreset::ALL {
         let s = PhysicsSettings {
+            gravity: Vec3::ZERO,
             sleep_enabled: false,
             ..preset.settings()
-        };
-        let s = PhysicsSettings {
-            gravity: Vec3::ZERO,
-            ..s
         };
         let mut w = PhysicsWorld::new(s);
         let wall = w.insert_body(

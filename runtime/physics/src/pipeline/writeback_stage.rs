@@ -187,10 +187,7 @@ impl PhysicsWorld {
                 // Past the range of `max_position_spacing` or of the body's own size. The range
                 // is at least `spacing / ε` (2²³·spacing): the logarithms only for bodies past that.
                 let distance = pose.translation.abs().max_element();
-                let spacing = s
-                    .max_position_spacing
-                    .min(s.max_penetration_fraction * b.size);
-                if distance * f32::EPSILON > spacing {
+                if distance * f32::EPSILON > s.position_spacing_for(b.size) {
                     let range = s.precise_range_for(b.size);
                     if distance > range {
                         b.far_reported = true;
