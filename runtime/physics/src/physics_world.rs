@@ -79,9 +79,8 @@ pub struct PhysicsWorld {
     pub(crate) islands: HashMap<u32, Vec<BodyHandle>>,
     /// Scratch of the write-back: each solver body's pose at the end of the step.
     pub(crate) end_poses: Vec<crate::pose::Pose>,
-    /// Scratch of the write-back: (solver index, fraction of the step, carry, stopped from a
-    /// start in contact: `Sweep::from_contact`) for CCD hits.
-    pub(crate) ccd_clamps: Vec<(u32, f32, Vec3, bool)>,
+    /// Scratch of the write-back: the bodies CCD stopped this step.
+    pub(crate) ccd_clamps: Vec<crate::pipeline::ccd::CcdClamp>,
     pub(crate) next_island: u32,
     pub(crate) time: f64,
 }

@@ -32,6 +32,7 @@ use crate::body_set::BodySet;
 use crate::broadphase::BroadPhase;
 use crate::collider::Collider;
 use crate::collider_set::ColliderSet;
+use crate::material::Material;
 use crate::narrowphase::separating_axis::{convex_gap, core_reach};
 use crate::pose::Pose;
 use crate::shape::{ConvexCore, Shape};
@@ -132,6 +133,53 @@ pub(crate) struct Sweep {
     /// The hit came from a start in contact or in overlap, where the search bounds the
     /// translation only (see [`Pair::time_of_impact`]).
     pub from_contact: bool,
+    /// Unit normal of the hit, from the swept body towards the one hit (zero without a hit).
+    pub normal: Vec3,
+    /// Combined restitution of the two colliders of the hit.
+    pub restitution: f32,
+}
+
+/// What one pair search found (see [`Pair::time_of_impact`]).
+#[derive(Clone, Copy, Debug, PartialEq)]
+struct Impact {
+    /// Fraction of the step until the pair comes within the stop distance (1: never).
+    t: f32,
+    /// The search hit [`CCD_MAX_ITERATIONS`].
+    capped: bool,
+    /// The pair started in contact or overlap.
+    from_contact: bool,
+    /// Unit normal from the swept body towards the other at the stop.
+    normal: Vec3,
+}
+
+impl Impact {
+    const NONE: Self = Self {
+        t: 1.0,
+        capped: false,
+        from_contact: false,
+        normal: Vec3::ZERO,
+    };
+}
+
+/// A body CCD stopped short of where the solver left it, as the write-back applies it.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) struct CcdClamp {
+    /// Solver index of the body.
+    pub body: u32,
+    /// Fraction of its motion it keeps.
+    pub t: f32,
+    /// Displacement over the whole step of the body hit when that one goes on moving (a wall
+    /// moving into a bullet carries it along for the rest of the step); zero for a dynamic
+    /// body with CCD, which stops with this one instead.
+    pub hit_motion: Vec3,
+    /// [`Sweep::from_contact`].
+    pub from_contact: bool,
+    /// The body hit.
+    pub hit: BodyHandle,
+    /// [`Sweep::normal`].
+    pub normal: Vec3,
+    /// [`Sweep::restitution`].
+    pub restitution: f32,
 }
 
 /// One collider of the swept body, ready for the pair searches.
@@ -165,6 +213,8 @@ pub(crate) fn sweep_body(
         hit: None,
         not_converged: false,
         from_contact: false,
+        normal: Vec3::ZERO,
+        restitution: 0.0,
     };
     let Some(b) = bodies.get(body) else {
         return out;
@@ -232,12 +282,14 @@ pub(crate) fn sweep_body(
                 origin,
                 swept: &swept,
             };
-            let (t, capped, from_contact) = pair.time_of_impact(target, out.t, local_box);
-            out.not_converged |= capped;
-            if t < out.t {
-                out.t = t;
+            let hit = pair.time_of_impact(target, out.t, local_box);
+            out.not_converged |= hit.capped;
+            if hit.t < out.t {
+                out.t = hit.t;
                 out.hit = Some(other.parent);
-                out.from_contact = from_contact;
+                out.from_contact = hit.from_contact;
+                out.normal = hit.normal;
+                out.restitution = Material::combine(&c.material, &other.material).0;
             }
             true
         });
@@ -257,22 +309,23 @@ struct Pair<'a> {
 }
 
 impl Pair<'_> {
-    /// Fraction of the step until the pair comes within `target`, at most `t_max`, whether
-    /// the search was capped, and whether the pair started in contact or overlap (the
-    /// search then bounds the translation only).
-    fn time_of_impact(&self, target: f32, t_max: f32, local_box: Aabb) -> (f32, bool, bool) {
+    /// The fraction of the step until the pair comes within `target` (at most `t_max`) and
+    /// the normal there, whether the search was capped, and whether the pair started in
+    /// contact or overlap (the search then bounds the translation only).
+    fn time_of_impact(&self, target: f32, t_max: f32, local_box: Aabb) -> Impact {
         let a = self.a;
         let Some((d0, _)) = self.distance(0.0, &a.core, a.radius, &a.local) else {
-            return (1.0, false, false);
+            return Impact::NONE;
         };
         if d0 > target {
-            let (t, capped) = self.advance(target, t_max, &a.core, a.radius, &a.local, true);
-            return (t, capped, false);
+            return self.advance(target, t_max, &a.core, a.radius, &a.local, true);
         }
         if d0 > 0.0 {
             // Touching at step start: it may slide along, not close more than half the gap.
-            let (t, capped) = self.advance(0.5 * d0, t_max, &a.core, a.radius, &a.local, false);
-            return (t, capped, true);
+            return Impact {
+                from_contact: true,
+                ..self.advance(0.5 * d0, t_max, &a.core, a.radius, &a.local, false)
+            };
         }
         // Overlapping at step start: sweep the inner core.
         let half = local_box.half_extents();
@@ -288,19 +341,24 @@ impl Pair<'_> {
             if let Some((dc, _)) = self.distance(0.0, &ConvexCore::Point, core_radius, &local) {
                 if dc > 0.0 {
                     let core_target = target.min(0.5 * dc);
-                    let (t, capped) = self.advance(
-                        core_target,
-                        t_max,
-                        &ConvexCore::Point,
-                        core_radius,
-                        &local,
-                        false,
-                    );
-                    return (t, capped, true);
+                    return Impact {
+                        from_contact: true,
+                        ..self.advance(
+                            core_target,
+                            t_max,
+                            &ConvexCore::Point,
+                            core_radius,
+                            &local,
+                            false,
+                        )
+                    };
                 }
             }
         }
-        (1.0, false, true)
+        Impact {
+            from_contact: true,
+            ..Impact::NONE
+        }
     }
 
     /// Conservative advancement from `t = 0` until the distance is at most `target`. With
@@ -315,7 +373,7 @@ impl Pair<'_> {
         radius: f32,
         local: &Pose,
         turning: bool,
-    ) -> (f32, bool) {
+    ) -> Impact {
         let rel = self.a_motion.displacement() - self.b_motion.displacement();
         let spin = if turning {
             self.a_motion.turn() * self.a.reach
@@ -324,25 +382,36 @@ impl Pair<'_> {
             0.0
         };
         let mut t = 0.0f32;
+        let mut normal = Vec3::ZERO;
         for _ in 0..CCD_MAX_ITERATIONS {
             let Some((d, n)) = self.distance(t, core, radius, local) else {
-                return (1.0, false);
+                return Impact::NONE;
             };
+            normal = n;
             if d <= target {
-                return (t, false);
+                return Impact {
+                    t,
+                    normal,
+                    ..Impact::NONE
+                };
             }
             // n points from A to B: A closes along +n.
             let mu = n.dot(rel) + spin;
             if mu <= 0.0 {
-                return (1.0, false);
+                return Impact::NONE;
             }
             let next = t + (d - 0.5 * target) / mu;
             if next >= t_max {
-                return (1.0, false);
+                return Impact::NONE;
             }
             t = next;
         }
-        (t, true)
+        Impact {
+            t,
+            capped: true,
+            from_contact: false,
+            normal,
+        }
     }
 
     /// A lower bound on the distance from A's core (with `radius`, at body-relative `local`)

@@ -3,13 +3,15 @@
 //!
 //! Three passes: every awake body's end pose from the solver; then CCD for the bodies that
 //! ask for it, against every other body's motion over the step (static, kinematic and
-//! dynamic alike, see [`super::ccd`]); then the poses are committed.
+//! dynamic alike, see [`super::ccd`]), where two dynamic bodies with CCD that stop each
+//! other stop at the same time and a stop from a start in contact ends the pair's closing as
+//! an impact does; then the poses are committed.
 
 use std::time::Instant;
 
 use glam::Vec3;
 
-use super::ccd::{sweep_body, BodyMotion};
+use super::ccd::{sweep_body, BodyMotion, CcdClamp};
 use crate::body_handle::BodyHandle;
 use crate::body_type::BodyType;
 use crate::far_body::FarBody;
@@ -101,24 +103,35 @@ impl PhysicsWorld {
                     self.output.counters.ccd_not_converged += 1;
                 }
                 if let (true, Some(hit)) = (sweep.t < 1.0, sweep.hit) {
-                    // A body hit by this one keeps moving unless it is clamped too (dynamic
-                    // with CCD): carry this one along for the rest of the step, so that a
-                    // wall moving into a bullet does not pass it after the impact.
-                    let carry = match self.bodies.get(hit) {
-                        Some(o) if !(o.ccd_enabled && o.body_type == BodyType::Dynamic) => {
-                            motion_of(hit).map_or(Vec3::ZERO, |m| m.displacement())
-                                * (1.0 - sweep.t)
-                        }
-                        _ => Vec3::ZERO,
+                    // A body hit by this one keeps moving unless it stops itself (dynamic,
+                    // with CCD, see below): this one is carried along for the rest of the
+                    // step, so that a wall moving into a bullet does not pass it after the
+                    // impact.
+                    let hit_motion = match self.bodies.get(hit) {
+                        Some(o) if o.ccd_enabled && o.body_type == BodyType::Dynamic => Vec3::ZERO,
+                        _ => motion_of(hit).map_or(Vec3::ZERO, |m| m.displacement()),
                     };
-                    self.ccd_clamps
-                        .push((k as u32, sweep.t, carry, sweep.from_contact));
+                    self.ccd_clamps.push(CcdClamp {
+                        body: k as u32,
+                        t: sweep.t,
+                        hit_motion,
+                        from_contact: sweep.from_contact,
+                        hit,
+                        normal: sweep.normal,
+                        restitution: sweep.restitution,
+                    });
                     self.output.counters.ccd_hits += 1;
                 }
                 ccd_time += t0.elapsed();
             }
-            for &(k, t, carry, from_contact) in &self.ccd_clamps {
-                let k = k as usize;
+            self.stop_together();
+            for i in 0..self.ccd_clamps.len() {
+                let clamp = self.ccd_clamps[i];
+                let CcdClamp {
+                    t, from_contact, ..
+                } = clamp;
+                let carry = clamp.hit_motion * (1.0 - t);
+                let k = clamp.body as usize;
                 let Some(b) = self.bodies.arena.get_by_index(self.solver_handles[k]) else {
                     continue;
                 };
@@ -148,6 +161,9 @@ impl PhysicsWorld {
                 let v2 = st.v.length_squared();
                 if v2 > 0.0 && rise != 0.0 {
                     st.v *= ((v2 + 2.0 * rise).max(0.0) / v2).sqrt();
+                }
+                if from_contact {
+                    self.stop_closing(&clamp, s.restitution_threshold);
                 }
             }
         }
@@ -242,5 +258,110 @@ impl PhysicsWorld {
         // Forces live only on awake dynamic bodies (adding one wakes the body), which the loop
         // above cleared: sleeping bodies are not visited.
         self.output.counters.ccd = ccd_time;
+    }
+
+    /// Two dynamic bodies with CCD that stop each other stop at the same fraction of the step,
+    /// the earlier of their two: each was swept against the other's whole motion, and only the
+    /// poses at one time are known to be apart. Stopped at their own fractions, two plates the
+    /// contact had set moving together (one stopped at 0.6 % of the step, the other at 1.5 %)
+    /// ended on each other's far side; stopped by one's sweep alone (the other's, by rounding,
+    /// found nothing), the one left behind was passed through.
+    fn stop_together(&mut self) {
+        // Each pass can only lower a fraction or add a body; a chain of n bodies settles in n
+        // passes.
+        for _ in 0..self.ccd_clamps.len() {
+            let mut changed = false;
+            for i in 0..self.ccd_clamps.len() {
+                let c = self.ccd_clamps[i];
+                let Some(o) = self.bodies.get(c.hit) else {
+                    continue;
+                };
+                let other = o.solver_index;
+                if !(o.ccd_enabled && o.body_type == BodyType::Dynamic && other != 0) {
+                    continue;
+                }
+                match self.ccd_clamps.iter().position(|x| x.body == other) {
+                    Some(j) if self.ccd_clamps[j].t > c.t => {
+                        self.ccd_clamps[j].t = c.t;
+                        changed = true;
+                    }
+                    Some(_) => {}
+                    None => {
+                        let body = self.solver_handles[c.body as usize];
+                        self.ccd_clamps.push(CcdClamp {
+                            body: other,
+                            t: c.t,
+                            hit_motion: Vec3::ZERO,
+                            from_contact: c.from_contact,
+                            hit: self.bodies.handle_of(body),
+                            normal: -c.normal,
+                            restitution: c.restitution,
+                        });
+                        changed = true;
+                    }
+                }
+            }
+            if !changed {
+                break;
+            }
+        }
+    }
+
+    /// After a CCD stop from a start in contact, the centres of the two bodies that still close
+    /// along the hit's normal meet as in an impact: an impulse through both centres turns the
+    /// closing velocity into a parting one `e` times as fast (`e`, the pair's restitution,
+    /// counts only above `restitution_threshold`, as in the solver; a static, kinematic or
+    /// sleeping body hit takes none of the impulse).
+    ///
+    /// The contact the solver had was not enough to part them: light, thin bodies touching
+    /// edge to edge are held apart by the spin the contact gives them more than by their
+    /// centres' velocities, and the stop takes that spin back (see the write-back). Left
+    /// closing, they stay stopped at each step's start, velocities and all: of 23,040 meetings
+    /// of small spinning bodies at 50–1,000 m/s (`tests/ccd_meetings.rs`, eight times its
+    /// starts), 1,961 still closed at over 1 m/s along their line of centres, within 60 cm of
+    /// each other, after 0.1 s; with the impulse 129, bodies sliding along a plate's face.
+    fn stop_closing(&mut self, clamp: &CcdClamp, threshold: f32) {
+        let n = glam::Vec3A::from(clamp.normal);
+        if n == glam::Vec3A::ZERO {
+            return;
+        }
+        let a = clamp.body as usize;
+        let (b, v_b) = match self.bodies.get(clamp.hit) {
+            Some(o) => {
+                let k = o.solver_index as usize;
+                if k != 0 && k < self.solver_states.len() {
+                    (k, self.solver_states[k].v)
+                } else {
+                    (0, o.linvel.into())
+                }
+            }
+            None => return,
+        };
+        let closing = (self.solver_states[a].v - v_b).dot(n);
+        if closing <= 0.0 {
+            return;
+        }
+        let (inv_a, inv_b) = (
+            self.solver_states[a].inv_mass,
+            if b != 0 {
+                self.solver_states[b].inv_mass
+            } else {
+                glam::Vec3A::ZERO
+            },
+        );
+        let k = (inv_a + inv_b).dot(n * n);
+        if k <= 0.0 {
+            return;
+        }
+        let e = if closing > threshold {
+            clamp.restitution
+        } else {
+            0.0
+        };
+        let j = (1.0 + e) * closing / k;
+        self.solver_states[a].v -= inv_a * n * j;
+        if b != 0 {
+            self.solver_states[b].v += inv_b * n * j;
+        }
     }
 }
