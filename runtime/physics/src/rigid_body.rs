@@ -72,6 +72,12 @@ pub(crate) struct SpinCache {
 }
 
 impl RigidBody {
+    /// Dynamic with CCD on: CCD sweeps its motion and stops it (when the world's
+    /// `ccd_enabled` is on too).
+    pub(crate) fn swept(&self) -> bool {
+        self.ccd_enabled && self.body_type == BodyType::Dynamic
+    }
+
     /// Dynamic, kinematic or static.
     #[must_use]
     pub fn body_type(&self) -> BodyType {

@@ -67,7 +67,7 @@ impl PhysicsWorld {
                 let Some(b) = self.bodies.arena.get_by_index(idx) else {
                     continue;
                 };
-                if !(b.ccd_enabled && b.body_type == BodyType::Dynamic) {
+                if !b.swept() {
                     continue;
                 }
                 let end = &self.end_poses[k];
@@ -108,7 +108,7 @@ impl PhysicsWorld {
                     // step, so that a wall moving into a bullet does not pass it after the
                     // impact.
                     let hit_motion = match self.bodies.get(hit) {
-                        Some(o) if o.ccd_enabled && o.body_type == BodyType::Dynamic => Vec3::ZERO,
+                        Some(o) if o.swept() => Vec3::ZERO,
                         _ => motion_of(hit).map_or(Vec3::ZERO, |m| m.displacement()),
                     };
                     self.ccd_clamps.push(CcdClamp {
@@ -222,7 +222,7 @@ impl PhysicsWorld {
                 b.linvel = Vec3::ZERO;
                 b.angvel = Vec3::ZERO;
             }
-            let ccd_on = s.ccd_enabled && b.ccd_enabled && b.body_type == BodyType::Dynamic;
+            let ccd_on = s.ccd_enabled && b.swept();
             b.pose = pose;
             b.last_good_pose = pose;
             b.spin_cache = (sb.gyro && sb.omega_world == st.w).then_some(SpinCache {
@@ -267,6 +267,15 @@ impl PhysicsWorld {
     /// ended on each other's far side; stopped by one's sweep alone (the other's, by rounding,
     /// found nothing), the one left behind was passed through.
     fn stop_together(&mut self) {
+        if self.ccd_clamps.is_empty() {
+            return;
+        }
+        // Which clamp, if any, stops each solver body (index + 1; 0 for none): a look-up,
+        // not a search of the clamps for every clamp.
+        let mut clamp_of = vec![0u32; self.solver_states.len()];
+        for (i, c) in self.ccd_clamps.iter().enumerate() {
+            clamp_of[c.body as usize] = i as u32 + 1;
+        }
         // Each pass can only lower a fraction or add a body; a chain of n bodies settles in n
         // passes.
         for _ in 0..self.ccd_clamps.len() {
@@ -277,16 +286,11 @@ impl PhysicsWorld {
                     continue;
                 };
                 let other = o.solver_index;
-                if !(o.ccd_enabled && o.body_type == BodyType::Dynamic && other != 0) {
+                if !(o.swept() && other != 0) {
                     continue;
                 }
-                match self.ccd_clamps.iter().position(|x| x.body == other) {
-                    Some(j) if self.ccd_clamps[j].t > c.t => {
-                        self.ccd_clamps[j].t = c.t;
-                        changed = true;
-                    }
-                    Some(_) => {}
-                    None => {
+                match clamp_of[other as usize] {
+                    0 => {
                         let body = self.solver_handles[c.body as usize];
                         self.ccd_clamps.push(CcdClamp {
                             body: other,
@@ -297,7 +301,15 @@ impl PhysicsWorld {
                             normal: -c.normal,
                             restitution: c.restitution,
                         });
+                        clamp_of[other as usize] = self.ccd_clamps.len() as u32;
                         changed = true;
+                    }
+                    j => {
+                        let theirs = &mut self.ccd_clamps[j as usize - 1];
+                        if theirs.t > c.t {
+                            theirs.t = c.t;
+                            changed = true;
+                        }
                     }
                 }
             }
