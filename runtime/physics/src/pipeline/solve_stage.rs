@@ -19,6 +19,7 @@ use crate::solver::contact_batch::{
 };
 use crate::solver::contact_constraint::{
     prepare, ContactConstraint, FrictionPart, ManifoldRef, NormalBlock, PreparedManifold,
+    TOUCHING_SIZE_FRACTION,
 };
 use crate::solver::noise::matrix_without_noise;
 use crate::solver::restitution::{bounce_velocity, held_velocity};
@@ -322,6 +323,11 @@ impl PhysicsWorld {
                     load_level_share: 0.0,
                     mass_scale: support_mass_scale(pair, r, states, &s),
                     softness: Softness::RIGID,
+                    touching: if pair.size < f32::MAX {
+                        TOUCHING_SIZE_FRACTION * pair.size
+                    } else {
+                        0.0
+                    },
                     count: r.count,
                     friction: FrictionPart::default(),
                     block: NormalBlock::default(),

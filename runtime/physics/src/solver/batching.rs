@@ -309,6 +309,7 @@ mod tests {
                 load_level_share: 0.0,
                 mass_scale: [1.0; 2],
                 softness: Softness::RIGID,
+                touching: 0.0,
                 count: r.count,
                 friction: FrictionPart::default(),
                 block: NormalBlock::default(),

@@ -358,6 +358,8 @@ pub(crate) struct ContactBatch<const N: usize, M: ManifoldRows, L: Levers<N>> {
     normal: V3,
     tangent: [V3; 2],
     bias_rate: F,
+    /// Separation up to which a row is soft (`ContactConstraint::touching`).
+    touching: F,
     mass_scale: F,
     impulse_scale: F,
     restitution: F,
@@ -430,6 +432,7 @@ impl<const N: usize, M: ManifoldRows, L: Levers<N>> ContactBatch<N, M, L> {
         normal: V3::ZERO,
         tangent: [V3::ZERO; 2],
         bias_rate: F::ZERO,
+        touching: F::ZERO,
         mass_scale: F::ZERO,
         impulse_scale: F::ZERO,
         restitution: F::ZERO,
@@ -470,6 +473,7 @@ impl<const N: usize, M: ManifoldRows, L: Levers<N>> ContactBatch<N, M, L> {
         self.tangent[0].set(l, c.tangent[0]);
         self.tangent[1].set(l, c.tangent[1]);
         set(&mut self.bias_rate, l, c.softness.bias_rate);
+        set(&mut self.touching, l, c.touching);
         set(&mut self.mass_scale, l, c.softness.mass_scale);
         set(&mut self.impulse_scale, l, c.softness.impulse_scale);
         set(&mut self.restitution, l, c.restitution);
@@ -663,7 +667,8 @@ impl<const N: usize, M: ManifoldRows, L: Levers<N>> ContactBatch<N, M, L> {
                 None => (cp.base_separation + dpn, dvn),
             };
             vn[k] = v;
-            let speculative = sep.simd_gt(zero);
+            // Within rounding of touching, a point is touching (`TOUCHING_SIZE_FRACTION`).
+            let speculative = sep.simd_gt(self.touching);
             rows.speculative[k] = speculative;
             if pass.use_bias {
                 // No dead zone (as in Box2D v3 and rapier): a resting contact settles at the
