@@ -378,57 +378,89 @@ fn a_column_placed_face_to_face_leaves_its_first_step_without_turning() {
     }
 }
 
+/// Columns of two to ten equal cubes from 3 mm to 10 m, placed touching, stay up at balanced
+/// and precise for 10 s (the top cube less than a fifth of its size aside) and no contact
+/// sinks past 20 % of a cube (3 mm cubes under ten sink 18 % at balanced: their faces are
+/// at the step's stiffest, and the host names the contact; the 5 % budget is the ignored
+/// test's). Their faces, stiffened for the depth budget, are soft in tilt,
+/// and in series under the load above them the columns buckled: at balanced five 1 cm cubes
+/// and ten 3 cm ones fell, at precise ten 1 cm ones (see `contact_batch::column_face`).
+/// 1 mm cubes are not held (see the ignored test below).
+#[test]
+fn columns_of_cubes_from_3_mm_stay_up_at_balanced_and_precise() {
+    let mut failures = Vec::new();
+    for preset in [PhysicsPreset::Balanced, PhysicsPreset::Precise] {
+        for size in [0.003f32, 0.01, 0.03, 0.1, 1.0, 10.0] {
+            for count in [2usize, 5, 10] {
+                let (side, deepest) = column_of_cubes(preset, size, count);
+                if !(side <= 0.2 * size && deepest <= 0.2 * size) {
+                    failures.push(format!(
+                        "{preset} {count} cubes of {size} m: top {side} m aside, deepest contact \
+                         {deepest} m"
+                    ));
+                }
+            }
+        }
+    }
+    assert!(failures.is_empty(), "columns fell: {failures:#?}");
+}
+
+/// A column of `count` cubes of `size` on a friction 0.6 ground, placed touching, run for
+/// 10 s: how far the top cube ends aside and the deepest contact over the last 5 s, m.
+fn column_of_cubes(preset: PhysicsPreset, size: f32, count: usize) -> (f32, f32) {
+    let mut w = PhysicsWorld::new(preset.settings());
+    let ground = w.insert_body(RigidBodyDesc::fixed());
+    w.insert_collider(ColliderDesc::half_space(Vec3::Y).friction(0.6), ground);
+    let cubes: Vec<BodyHandle> = (0..count)
+        .map(|i| {
+            let b = w.insert_body(
+                RigidBodyDesc::dynamic()
+                    .translation(Vec3::Y * size * (0.5 + i as f32))
+                    .can_sleep(false),
+            );
+            w.insert_collider(
+                ColliderDesc::cuboid(0.5 * size, 0.5 * size, 0.5 * size).friction(0.6),
+                b,
+            );
+            b
+        })
+        .collect();
+    let steps = (10.0 / w.settings().dt) as usize;
+    let mut deepest = 0.0f32;
+    for k in 0..steps {
+        w.step();
+        if k >= steps / 2 {
+            let y = |i: usize| w.body(cubes[i]).unwrap().translation().y;
+            let mut pen = 0.5 * size - y(0);
+            for i in 1..count {
+                pen = pen.max(size - (y(i) - y(i - 1)));
+            }
+            deepest = deepest.max(pen);
+        }
+    }
+    let top = w.body(cubes[count - 1]).unwrap().translation();
+    (Vec3::new(top.x, 0.0, top.z).length(), deepest)
+}
+
 /// Columns of equal cubes from 1 mm to 10 m, placed touching: each stands at balanced and
 /// precise with its contacts within 5 % of the cube's size over the last 5 s of 10 s.
 ///
-/// Fails: columns of small cubes sway with a growing amplitude and fall (at balanced five
-/// 1 cm cubes and ten 3 cm ones, at precise ten 1 cm ones, and 1 mm columns of five at
-/// both). The model is scale free (a column of 1 cm cubes under g behaves as one of 1 m
-/// cubes under 100 g); both a shorter substep and a shorter step hold more of them (five
-/// 1 cm cubes stand at 60 Hz × 8 and 120 × 4, ten 3 cm cubes at 240 × 4 but not 60 × 32),
-/// and a second iteration, stiffness, damping, levelling or friction do not. rapier 0.36
-/// keeps them standing 17–50 % of a cube deep (its slop is absolute). `cargo run --release
-/// -p onyx-physics-bench --example small_stacks` prints both engines; see
+/// Fails: 1 mm cubes and ten 1 cm ones. At balanced the stiffest face the step allows
+/// (90 Hz) holds two 1 mm cubes 6.1 % deep and five 25 % deep, and ten 1 cm cubes sink
+/// 5.5 %; ten 1 mm cubes fall at both presets and five lean by a quarter of a cube at
+/// precise. Columns from 3 mm up stay up (the test above); before their faces were made
+/// column faces they buckled. rapier 0.36 keeps 1–3 cm columns standing 17–50 % of a cube
+/// deep (its slop is absolute) and drops 1 mm ones. `cargo run --release -p
+/// onyx-physics-bench --example small_stacks` prints both engines; see
 /// docs/physics-accuracy.md, *Where Onyx is behind*.
 #[test]
-#[ignore = "columns of small cubes fall at balanced and precise; open"]
+#[ignore = "columns of 1 mm cubes fall or sink past 5 % at balanced and precise; open"]
 fn columns_of_small_cubes_stand_at_balanced_and_precise() {
     let mut failures = Vec::new();
     for preset in [PhysicsPreset::Balanced, PhysicsPreset::Precise] {
         for size in [0.001f32, 0.01, 0.03, 0.1, 1.0, 10.0] {
             for count in [2usize, 5, 10] {
-                let mut w = PhysicsWorld::new(preset.settings());
-                let ground = w.insert_body(RigidBodyDesc::fixed());
-                w.insert_collider(ColliderDesc::half_space(Vec3::Y).friction(0.6), ground);
-                let cubes: Vec<BodyHandle> = (0..count)
-                    .map(|i| {
-                        let b = w.insert_body(
-                            RigidBodyDesc::dynamic()
-                                .translation(Vec3::Y * size * (0.5 + i as f32))
-                                .can_sleep(false),
-                        );
-                        w.insert_collider(
-                            ColliderDesc::cuboid(0.5 * size, 0.5 * size, 0.5 * size).friction(0.6),
-                            b,
-                        );
-                        b
-                    })
-                    .collect();
-                let steps = (10.0 / w.settings().dt) as usize;
-                let mut deepest = 0.0f32;
-                for k in 0..steps {
-                    w.step();
-                    if k >= steps / 2 {
-                        let y = |i: usize| w.body(cubes[i]).unwrap().translation().y;
-                        let mut pen = 0.5 * size - y(0);
-                        for i in 1..count {
-                            pen = pen.max(size - (y(i) - y(i - 1)));
-                        }
-                        deepest = deepest.max(pen);
-                    }
-                }
-                let top = w.body(cubes[count - 1]).unwrap().translation();
-                let side = Vec3::new(top.x, 0.0, top.z).length();
+                let (side, deepest) = column_of_cubes(preset, size, count);
                 if !(side <= 0.2 * size && deepest <= 0.05 * size) {
                     failures.push(format!(
                         "{preset} {count} cubes of {size} m: top {side} m aside, deepest contact \

@@ -15,7 +15,7 @@ use crate::pipeline::jointed_masses::JointedMasses;
 use crate::rigid_body::mask_mat;
 use crate::solver::body_state::BodyState;
 use crate::solver::contact_batch::{
-    levelled_for_load, Jitter, LEVEL_MAX_FRICTION, LOADED_LEVEL_SHARE,
+    column_face, levelled_for_load, Jitter, LEVEL_MAX_FRICTION, LEVEL_SHARE, LOADED_LEVEL_SHARE,
 };
 use crate::solver::contact_constraint::{
     prepare, ContactConstraint, FrictionPart, ManifoldRef, NormalBlock, PreparedManifold,
@@ -32,6 +32,10 @@ use crate::solver::Softness;
 /// penetration budget (`PhysicsSettings::max_penetration_fraction` of the smaller body's
 /// size): a contact at the budget is what the setting asks for, twice is what a user sees.
 pub const OVERLOAD_DEPTH_FACTOR: f32 = 2.0;
+
+/// A face supports the body above it when its normal is within this cosine of the vertical
+/// (45°): a column's faces, not a wall's.
+pub const SUPPORT_MIN_COS: f32 = std::f32::consts::FRAC_1_SQRT_2;
 
 impl PhysicsWorld {
     /// Names each overloaded pair once in the step output, with the cheapest preset whose
@@ -199,6 +203,11 @@ impl PhysicsWorld {
         self.manifold_refs.clear();
         let mut contacts = 0u32;
         let mut bouncy = false;
+        // Touching faces (two points or more) whose normal is within `SUPPORT_MIN_COS` of
+        // gravity support their upper body (a speculative face two cubes up does not).
+        let up = -s.gravity.normalize_or_zero();
+        self.supports.clear();
+        self.supports.resize(self.solver_bodies.len(), 0);
         // Some contact may be elastic (e = 1, no friction): see `solver::elastic_energy`.
         let mut elastic = false;
         for &pi in &self.narrowphase.updated_pairs {
@@ -225,6 +234,16 @@ impl PhysicsWorld {
                 }
                 let count = m.points.len().min(4) as u8;
                 contacts += u32::from(count);
+                let touching = TOUCHING_SIZE_FRACTION * pair.size;
+                if count > 1
+                    && m.normal.dot(up).abs() > SUPPORT_MIN_COS
+                    && m.points.iter().any(|p| p.separation <= touching)
+                {
+                    let (upper, _) = upper_lower(s.gravity, m.normal, sa.index, sb.index);
+                    if let Some(n) = self.supports.get_mut(upper as usize) {
+                        *n = n.saturating_add(1);
+                    }
+                }
                 self.manifold_refs.push(ManifoldRef {
                     pair: pi,
                     manifold: mi as u32,
@@ -290,10 +309,11 @@ impl PhysicsWorld {
         } else {
             RestingAccelerations::default()
         };
-        let (pairs, bodies, states) = (
+        let (pairs, bodies, states, supports) = (
             &self.narrowphase.pairs,
             &self.solver_bodies,
             &self.solver_states,
+            &self.supports,
         );
         let prepare_one =
             |r: &ManifoldRef,
@@ -318,6 +338,7 @@ impl PhysicsWorld {
                     tangent: [t1.into(), t2.into()],
                     restitution: pair.restitution,
                     elastic: false,
+                    column: false,
                     bounce_accel: 0.0,
                     pressing: [Vec3A::ZERO; 2],
                     load_level_share: 0.0,
@@ -355,7 +376,7 @@ impl PhysicsWorld {
                     pair.dynamic_friction,
                     s.static_friction_speed,
                 );
-                let (upper, _) = upper_lower(s.gravity, n, r.body_a, r.body_b);
+                let (upper, lower) = upper_lower(s.gravity, n, r.body_a, r.body_b);
                 // The friction bound of a support under a scaled light body carries the load
                 // the scaling hides from it (see `HiddenLoads`): folded into the coefficient
                 // (a field of its own in every constraint cost the 100-row pyramid, which has
@@ -495,7 +516,29 @@ impl PhysicsWorld {
                     (softness, used)
                 };
                 c.softness = softness;
-                c.load_level_share = if levelled_for_load(ratio, used_hz, pair.size, g) {
+                // Only a face stiffened past its load's stiffness for its size budget, between
+                // bodies resting on one face each: a column, not a pyramid (whose bricks rest
+                // on two and spread the load they carry), and not under a heavy body on a light
+                // one (`HiddenLoads` holds those).
+                let single = |i: u32| i == 0 || supports.get(i as usize).is_none_or(|&n| n <= 1);
+                // Resting: every point touching and closing or parting by less than the depth
+                // budget in a step (a tumbling pile at `fast` is no column: taken for one, the
+                // 100-row pyramid's collapse there threw bricks 560 m instead of 120).
+                let resting = points[..count].iter().all(|cp| {
+                    cp.base_separation <= c.touching && cp.relative_velocity.abs() * s.dt <= budget
+                });
+                c.column = c.block.patch
+                    && resting
+                    && g > 0.0
+                    && hidden_factor <= 1.0
+                    && c.mass_scale == [1.0; 2]
+                    && used_hz > load_hz
+                    && single(upper)
+                    && single(lower)
+                    && column_face(ratio, used_hz, h);
+                c.load_level_share = if c.column {
+                    LEVEL_SHARE
+                } else if levelled_for_load(ratio, used_hz, pair.size, g) {
                     LOADED_LEVEL_SHARE
                 } else {
                     0.0

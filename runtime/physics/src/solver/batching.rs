@@ -208,6 +208,22 @@ impl ContactBatches {
             .for_each(|b| b.solve(states, pass));
     }
 
+    /// Whether some batch holds a column face (`ContactConstraint::column`).
+    pub(crate) fn has_columns(&self) -> bool {
+        self.four.iter().any(|b| b.has_column()) || self.four_linear.iter().any(|b| b.has_column())
+    }
+
+    /// One more pass over the batches that hold a column face (their other lanes too: a
+    /// pass is per batch).
+    pub(crate) fn solve_columns(&mut self, states: &mut [BodyState], pass: Pass) {
+        for b in self.four.iter_mut().filter(|b| b.has_column()) {
+            b.solve(states, pass);
+        }
+        for b in self.four_linear.iter_mut().filter(|b| b.has_column()) {
+            b.solve(states, pass);
+        }
+    }
+
     /// One restitution pass after the substeps, batch by batch (see
     /// [`ContactBatch::apply_restitution`](super::contact_batch::ContactBatch::apply_restitution));
     /// returns the largest change of a point's normal velocity it made, m/s.
@@ -304,6 +320,7 @@ mod tests {
                 tangent: [Vec3A::X, Vec3A::Z],
                 restitution: 0.0,
                 elastic: false,
+                column: false,
                 bounce_accel: 0.0,
                 pressing: [Vec3A::ZERO; 2],
                 load_level_share: 0.0,

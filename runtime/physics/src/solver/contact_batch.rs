@@ -180,6 +180,39 @@ pub const LOADED_LEVEL_SHARE: f32 = 0.4;
 /// (0) made the 20-row pyramid slump 3–6 cm instead of 2.5 cm.
 pub const TILT_LEVEL_FRACTION: f32 = 2.0 / 3.0;
 
+/// Load ratio past which a face is part of a column (see [`column_face`]): it carries more
+/// than the body on it.
+pub const COLUMN_LOAD_RATIO: f32 = 1.5;
+
+/// `h·ω` of a face's stiffness past which its column is not solved by one iteration (see
+/// [`column_face`]). Bounded `(0, 2π]`: the loaded faces of ten 3 cm cubes are at 1.3–2.4 at
+/// 60 Hz × 4 and the lowest at 1.13 at 120 Hz × 4 (all fell; at 1.3 the latter still fell
+/// after 9.5 s); the budget-stiffened faces of the 100-row pyramid stay below 0.89 at
+/// 60 Hz × 4 (and its bricks rest on two faces, so none is a column face).
+pub const COLUMN_STIFFNESS: f32 = 1.0;
+
+/// Whether a face with its `load_ratio` and a stiffness of `hertz` at substep `h` is a column
+/// face: levelled in tilt ([`LEVEL_SHARE`]) and solved again after the iterations
+/// (`solve::COLUMN_PASSES`).
+///
+/// A face stiffened only as far as its depth budget needs is soft in tilt (`k_θ = W·w/(4β)`
+/// for a load `W` on a face `w` wide with a depth budget `β` of it), and the faces of a
+/// column are tilt springs in series under the load above them, which tips them further the
+/// higher it sits: at 2 % budgets a column of ten equal cubes has no stable equilibrium
+/// (the chain's stiffness matrix, faces at the stiffness the step picks), and five are
+/// marginal. Levelled, a face is stiff in tilt while as soft in depth; but a column of faces
+/// stiff in tilt is a chain the step's one iteration does not converge: the columns fell
+/// sooner levelled than not, until the column was solved again. Such faces are the ones
+/// the depth budget stiffened past about one radian per substep (small bodies under loads;
+/// the caller checks that the budget set the stiffness): larger bodies' faces, and a
+/// ground face at its base stiffness, are left as they were (the ground face of a 20-box
+/// stack taken for one cost the stack 30 %).
+#[must_use]
+#[inline]
+pub fn column_face(load_ratio: f32, hertz: f32, h: f32) -> bool {
+    load_ratio > COLUMN_LOAD_RATIO && h * 2.0 * std::f32::consts::PI * hertz > COLUMN_STIFFNESS
+}
+
 /// Whether a face with friction of stiffness `hertz` under bodies of `size` metres is
 /// levelled for its load: its `load_ratio` (the contact's load over the weight of its own
 /// effective mass) is past [`TILT_LEVEL_FRACTION`] of the ratio at which a soft face stops
@@ -353,6 +386,8 @@ pub(crate) struct ContactBatch<const N: usize, M: ManifoldRows, L: Levers<N>> {
     writes_b: u8,
     /// Bit `l`: lane `l`'s contact is elastic (`ContactConstraint::elastic`).
     elastic: u8,
+    /// Bit `l`: lane `l` is a column face (`ContactConstraint::column`).
+    column: u8,
     inv_mass_a: V3,
     inv_mass_b: V3,
     normal: V3,
@@ -427,6 +462,7 @@ impl<const N: usize, M: ManifoldRows, L: Levers<N>> ContactBatch<N, M, L> {
         writes_a: 0,
         writes_b: 0,
         elastic: 0,
+        column: 0,
         inv_mass_a: V3::ZERO,
         inv_mass_b: V3::ZERO,
         normal: V3::ZERO,
@@ -465,6 +501,7 @@ impl<const N: usize, M: ManifoldRows, L: Levers<N>> ContactBatch<N, M, L> {
         self.writes_a |= (c.writes & 1) << l;
         self.writes_b |= ((c.writes >> 1) & 1) << l;
         self.elastic |= u8::from(c.elastic) << l;
+        self.column |= u8::from(c.column) << l;
         self.inv_mass_a
             .set(l, states[c.body_a as usize].inv_mass * c.mass_scale[0]);
         self.inv_mass_b
@@ -617,6 +654,11 @@ impl<const N: usize, M: ManifoldRows, L: Levers<N>> ContactBatch<N, M, L> {
         }
         Self::scatter(states, &self.body_a, self.writes_a, a);
         Self::scatter(states, &self.body_b, self.writes_b, b);
+    }
+
+    /// Some lane holds a column face (see `ContactBatches::solve_columns`).
+    pub(crate) fn has_column(&self) -> bool {
+        self.column != 0
     }
 
     /// One Gauss–Seidel pass: the normal rows (shared step, then point by point), then

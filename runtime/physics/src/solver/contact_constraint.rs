@@ -156,6 +156,9 @@ pub(crate) struct ContactConstraint {
     /// Restitution 1, no friction, and no impact that the restitution threshold took as
     /// inelastic: the contact does no work over the step (see `solver::elastic_energy`).
     pub elastic: bool,
+    /// A face in a column that needs more passes than the step's iterations to hold its
+    /// tilt (see `COLUMN_PASSES`): solved again after them.
+    pub column: bool,
     /// Relative normal acceleration of the bodies (gravity, forces), m/s², for restitution.
     pub bounce_accel: f32,
     /// Per side (A, B): where the body's own supports hold it, the unit direction its
