@@ -18,8 +18,8 @@ use crate::solver::contact_batch::{
     column_face, levelled_for_load, Jitter, LEVEL_MAX_FRICTION, LEVEL_SHARE, LOADED_LEVEL_SHARE,
 };
 use crate::solver::contact_constraint::{
-    prepare, ContactConstraint, FrictionPart, ManifoldRef, NormalBlock, PreparedManifold,
-    TOUCHING_SIZE_FRACTION,
+    prepare, touching_distance, ContactConstraint, FrictionPart, ManifoldRef, NormalBlock,
+    PreparedManifold,
 };
 use crate::solver::noise::matrix_without_noise;
 use crate::solver::restitution::{bounce_velocity, held_velocity};
@@ -234,7 +234,7 @@ impl PhysicsWorld {
                 }
                 let count = m.points.len().min(4) as u8;
                 contacts += u32::from(count);
-                let touching = TOUCHING_SIZE_FRACTION * pair.size;
+                let touching = touching_distance(pair.size);
                 if count > 1
                     && m.normal.dot(up).abs() > SUPPORT_MIN_COS
                     && m.points.iter().any(|p| p.separation <= touching)
@@ -344,11 +344,7 @@ impl PhysicsWorld {
                     load_level_share: 0.0,
                     mass_scale: support_mass_scale(pair, r, states, &s),
                     softness: Softness::RIGID,
-                    touching: if pair.size < f32::MAX {
-                        TOUCHING_SIZE_FRACTION * pair.size
-                    } else {
-                        0.0
-                    },
+                    touching: touching_distance(pair.size),
                     count: r.count,
                     friction: FrictionPart::default(),
                     block: NormalBlock::default(),
@@ -524,18 +520,22 @@ impl PhysicsWorld {
                 // Resting: every point touching and closing or parting by less than the depth
                 // budget in a step (a tumbling pile at `fast` is no column: taken for one, the
                 // 100-row pyramid's collapse there threw bricks 560 m instead of 120).
-                let resting = points[..count].iter().all(|cp| {
-                    cp.base_separation <= c.touching && cp.relative_velocity.abs() * s.dt <= budget
-                });
+                // Tested last: the cheap tests rule out nearly every face first.
+                let resting = |c: &ContactConstraint| {
+                    points[..count].iter().all(|cp| {
+                        cp.base_separation <= c.touching
+                            && cp.relative_velocity.abs() * s.dt <= budget
+                    })
+                };
                 c.column = c.block.patch
-                    && resting
                     && g > 0.0
+                    && used_hz > load_hz
+                    && column_face(ratio, used_hz, h)
                     && hidden_factor <= 1.0
                     && c.mass_scale == [1.0; 2]
-                    && used_hz > load_hz
                     && single(upper)
                     && single(lower)
-                    && column_face(ratio, used_hz, h);
+                    && resting(c);
                 c.load_level_share = if c.column {
                     LEVEL_SHARE
                 } else if levelled_for_load(ratio, used_hz, pair.size, g) {

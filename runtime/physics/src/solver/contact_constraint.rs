@@ -89,6 +89,18 @@ pub(crate) struct FrictionPart {
 /// rigid.
 pub const TOUCHING_SIZE_FRACTION: f32 = 1e-6;
 
+/// The separation, m, up to which a point of a pair whose smaller body is `size` across is
+/// touching ([`TOUCHING_SIZE_FRACTION`] of it; 0 where neither body is finite).
+#[must_use]
+#[inline]
+pub fn touching_distance(size: f32) -> f32 {
+    if size < f32::MAX {
+        TOUCHING_SIZE_FRACTION * size
+    } else {
+        0.0
+    }
+}
+
 /// Slot of the coupling between points `i < j` in [`NormalBlock::coupling`].
 pub(crate) const PAIR_SLOT: [[usize; 4]; 4] =
     [[0, 0, 1, 2], [0, 0, 3, 4], [1, 3, 0, 5], [2, 4, 5, 0]];
