@@ -56,7 +56,7 @@ pub struct PhysicsWorld {
     /// The manifolds the solver takes this step, in order.
     pub(crate) manifold_refs: Vec<ManifoldRef>,
     /// Per solver body, how many faces it rests on this step (see `column_face`).
-    pub(crate) supports: Vec<u8>,
+    pub(crate) supports: crate::pipeline::column_supports::ColumnSupports,
     /// What the narrowphase reads of each awake body, by arena index (see `NarrowBody`).
     pub(crate) narrow_bodies: Vec<crate::narrowphase::narrow_body::NarrowBody>,
     /// Solver index and dynamic flag by body arena index (see [`SolverSlot`]).
@@ -133,7 +133,7 @@ impl PhysicsWorld {
             solver_states: Vec::new(),
             solver_handles: Vec::new(),
             manifold_refs: Vec::new(),
-            supports: Vec::new(),
+            supports: Default::default(),
             narrow_bodies: Vec::new(),
             solver_slots: Vec::new(),
             contact_batches: Default::default(),

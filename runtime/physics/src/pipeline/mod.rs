@@ -2,6 +2,7 @@
 
 mod broadphase_stage;
 pub mod ccd;
+pub(crate) mod column_supports;
 mod contact_report_stage;
 pub(crate) mod heavy_on_light;
 pub mod joint_stage;

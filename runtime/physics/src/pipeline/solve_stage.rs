@@ -33,10 +33,6 @@ use crate::solver::Softness;
 /// size): a contact at the budget is what the setting asks for, twice is what a user sees.
 pub const OVERLOAD_DEPTH_FACTOR: f32 = 2.0;
 
-/// A face supports the body above it when its normal is within this cosine of the vertical
-/// (45°): a column's faces, not a wall's.
-pub const SUPPORT_MIN_COS: f32 = std::f32::consts::FRAC_1_SQRT_2;
-
 impl PhysicsWorld {
     /// Names each overloaded pair once in the step output, with the cheapest preset whose
     /// step would hold it (`needed`, Hz, within that preset's stiffness cap), once it has
@@ -203,11 +199,7 @@ impl PhysicsWorld {
         self.manifold_refs.clear();
         let mut contacts = 0u32;
         let mut bouncy = false;
-        // Touching faces (two points or more) whose normal is within `SUPPORT_MIN_COS` of
-        // gravity support their upper body (a speculative face two cubes up does not).
-        let up = -s.gravity.normalize_or_zero();
-        self.supports.clear();
-        self.supports.resize(self.solver_bodies.len(), 0);
+        self.supports.reset();
         // Some contact may be elastic (e = 1, no friction): see `solver::elastic_energy`.
         let mut elastic = false;
         for &pi in &self.narrowphase.updated_pairs {
@@ -234,16 +226,6 @@ impl PhysicsWorld {
                 }
                 let count = m.points.len().min(4) as u8;
                 contacts += u32::from(count);
-                let touching = touching_distance(pair.size);
-                if count > 1
-                    && m.normal.dot(up).abs() > SUPPORT_MIN_COS
-                    && m.points.iter().any(|p| p.separation <= touching)
-                {
-                    let (upper, _) = upper_lower(s.gravity, m.normal, sa.index, sb.index);
-                    if let Some(n) = self.supports.get_mut(upper as usize) {
-                        *n = n.saturating_add(1);
-                    }
-                }
                 self.manifold_refs.push(ManifoldRef {
                     pair: pi,
                     manifold: mi as u32,
@@ -309,13 +291,14 @@ impl PhysicsWorld {
         } else {
             RestingAccelerations::default()
         };
-        let (pairs, bodies, states, supports) = (
+        let (pairs, bodies, states, manifolds, supports) = (
             &self.narrowphase.pairs,
             &self.solver_bodies,
             &self.solver_states,
-            &self.supports,
+            &self.manifold_refs,
+            &mut self.supports,
         );
-        let prepare_one =
+        let mut prepare_one =
             |r: &ManifoldRef,
              out: &mut PreparedManifold,
              overloads: &mut Vec<(u32, f32, f32, f32, f32)>| {
@@ -516,7 +499,7 @@ impl PhysicsWorld {
                 // bodies resting on one face each: a column, not a pyramid (whose bricks rest
                 // on two and spread the load they carry), and not under a heavy body on a light
                 // one (`HiddenLoads` holds those).
-                let single = |i: u32| i == 0 || supports.get(i as usize).is_none_or(|&n| n <= 1);
+                let mut single = |i: u32| supports.single(i, manifolds, pairs, s.gravity);
                 // Resting: every point touching and closing or parting by less than the depth
                 // budget in a step (a tumbling pile at `fast` is no column: taken for one, the
                 // 100-row pyramid's collapse there threw bricks 560 m instead of 120).
