@@ -59,6 +59,10 @@ pub struct ContactPair {
     /// decaying with half-life `solver::softness::LOAD_MEMORY_HALF_LIFE`: the load its
     /// contact stiffens for (a bounce that unloads it for a step keeps it stiff).
     pub(crate) load_memory: f32,
+    /// Steps running that the pair's contact was a column face (`ContactConstraint::column`;
+    /// 0 when it was not last step): a column face settled for
+    /// `solver::contact_batch::COLUMN_SETTLE_STEPS` may stiffen past the step's cap.
+    pub(crate) column_steps: u16,
 }
 
 /// Poses a pair's manifolds were generated at, which reuse is measured against.

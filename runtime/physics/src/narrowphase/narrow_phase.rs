@@ -156,6 +156,7 @@ impl NarrowPhase {
             overload_reported: false,
             overloaded_at: None,
             load_memory: 0.0,
+            column_steps: 0,
         });
         true
     }

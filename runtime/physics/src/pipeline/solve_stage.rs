@@ -15,7 +15,8 @@ use crate::pipeline::jointed_masses::JointedMasses;
 use crate::rigid_body::mask_mat;
 use crate::solver::body_state::BodyState;
 use crate::solver::contact_batch::{
-    column_face, levelled_for_load, Jitter, LEVEL_MAX_FRICTION, LEVEL_SHARE, LOADED_LEVEL_SHARE,
+    column_face, column_rest_speed, levelled_for_load, Jitter, COLUMN_SETTLE_STEPS,
+    LEVEL_MAX_FRICTION, LEVEL_SHARE, LOADED_LEVEL_SHARE,
 };
 use crate::solver::contact_constraint::{
     prepare, touching_distance, ContactConstraint, FrictionPart, ManifoldRef, NormalBlock,
@@ -195,6 +196,7 @@ impl PhysicsWorld {
         let max_hertz = Softness::max_load_hertz(h, s.dt);
         let max_ball_hertz = Softness::max_ball_load_hertz(h, s.dt);
         let max_size_hertz = Softness::max_size_hertz(h, s.dt);
+        let max_column_hertz = Softness::max_column_hertz(h, s.dt);
         let g_h = s.gravity.length() * h;
         self.manifold_refs.clear();
         let mut contacts = 0u32;
@@ -444,29 +446,20 @@ impl PhysicsWorld {
                 let load_hz = Softness::load_hertz(base_hz, ratio, cap);
                 let omega_load = 2.0 * std::f32::consts::PI * load_hz;
                 // Most contacts settle within their budget at the load stiffness: nothing more.
-                let (softness, used_hz) = if load_accel <= budget * omega_load * omega_load {
-                    (Softness::new(load_hz, s.contact_damping_ratio, h), load_hz)
-                } else {
-                    let needed = Softness::size_hertz(load_accel, budget);
-                    let size_hz = needed.min(max_size_hertz);
-                    let used = size_hz.max(load_hz);
-                    // The mass it carries, in units of its own effective mass.
-                    let stiffening = (used / base_hz).powi(2);
-                    let carried = if g > 0.0 { load_accel / g } else { stiffening };
-                    // Deeper than the budget allows even at the stiffest contact, under the
-                    // load of this step (not the remembered one, which an impact fills for
-                    // several steps): a candidate, named once it is one two steps running.
-                    let omega = 2.0 * std::f32::consts::PI * used;
-                    let own_accel = (load / (mass * h)).max(weight / mass);
-                    let depth = own_accel / (omega * omega);
-                    if depth > OVERLOAD_DEPTH_FACTOR * budget
-                        && load > 0.0
-                        && !pair.overload_reported
-                    {
-                        let carried = if g > 0.0 { own_accel / g } else { stiffening };
-                        overloads.push((r.pair, depth, budget, needed, carried));
+                let within_budget = load_accel <= budget * omega_load * omega_load;
+                let needed = Softness::size_hertz(load_accel, budget);
+                // The softness and stiffness, Hz, of the face stiffened for its budget up to
+                // `max_hz`.
+                let stiffen = |max_hz: f32| {
+                    if within_budget {
+                        return (Softness::new(load_hz, s.contact_damping_ratio, h), load_hz);
                     }
+                    let size_hz = needed.min(max_hz);
+                    let used = size_hz.max(load_hz);
                     let softness = if size_hz > load_hz {
+                        // The mass it carries, in units of its own effective mass.
+                        let stiffening = (used / base_hz).powi(2);
+                        let carried = if g > 0.0 { load_accel / g } else { stiffening };
                         // Damped for the mass that moves rigidly with the contact: what it
                         // carries, but no more than the body on it and the bodies jointed to
                         // that one. Bodies resting further up hang on soft contacts of their
@@ -494,20 +487,19 @@ impl PhysicsWorld {
                     };
                     (softness, used)
                 };
-                c.softness = softness;
+                let (softness, used_hz) = stiffen(max_size_hertz);
                 // Only a face stiffened past its load's stiffness for its size budget, between
                 // bodies resting on one face each: a column, not a pyramid (whose bricks rest
                 // on two and spread the load they carry), and not under a heavy body on a light
                 // one (`HiddenLoads` holds those).
                 let mut single = |i: u32| supports.single(i, manifolds, pairs, s.gravity);
-                // Resting: every point touching and closing or parting by less than the depth
-                // budget in a step (a tumbling pile at `fast` is no column: taken for one, the
-                // 100-row pyramid's collapse there threw bricks 560 m instead of 120).
-                // Tested last: the cheap tests rule out nearly every face first.
+                // Resting: every point touching and closing or parting slower than
+                // `column_rest_speed`. Tested last: the cheap tests rule out nearly every face
+                // first.
+                let rest_speed = column_rest_speed(budget, used_hz, g, s.dt);
                 let resting = |c: &ContactConstraint| {
                     points[..count].iter().all(|cp| {
-                        cp.base_separation <= c.touching
-                            && cp.relative_velocity.abs() * s.dt <= budget
+                        cp.base_separation <= c.touching && cp.relative_velocity.abs() <= rest_speed
                     })
                 };
                 c.column = c.block.patch
@@ -519,6 +511,26 @@ impl PhysicsWorld {
                     && single(upper)
                     && single(lower)
                     && resting(c);
+                // A column face settled for some steps may stiffen past the step's cap.
+                let (softness, final_hz) = if c.column && pair.column_steps >= COLUMN_SETTLE_STEPS {
+                    stiffen(max_column_hertz)
+                } else {
+                    (softness, used_hz)
+                };
+                c.softness = softness;
+                // Deeper than the budget allows even at the stiffest contact, under the load of
+                // this step (not the remembered one, which an impact fills for several steps):
+                // a candidate, named once it is one two steps running.
+                if !within_budget && load > 0.0 && !pair.overload_reported {
+                    let omega = 2.0 * std::f32::consts::PI * final_hz;
+                    let own_accel = (load / (mass * h)).max(weight / mass);
+                    let depth = own_accel / (omega * omega);
+                    if depth > OVERLOAD_DEPTH_FACTOR * budget {
+                        let stiffening = (final_hz / base_hz).powi(2);
+                        let carried = if g > 0.0 { own_accel / g } else { stiffening };
+                        overloads.push((r.pair, depth, budget, needed, carried));
+                    }
+                }
                 c.load_level_share = if c.column {
                     LEVEL_SHARE
                 } else if levelled_for_load(ratio, used_hz, pair.size, g) {
@@ -608,6 +620,11 @@ impl PhysicsWorld {
                     pair.load_memory
                 };
                 pair.load_memory = kept.max(load);
+                pair.column_steps = if result.column {
+                    pair.column_steps.saturating_add(1)
+                } else {
+                    0
+                };
                 // Every non-empty manifold of a solved pair is solved: the pair's flag is exact.
                 let pushing = m.points.iter().any(|p| p.max_normal_impulse > 0.0);
                 pair.solved_pushing = Some(pair.solved_pushing == Some(true) || pushing);

@@ -28,11 +28,12 @@ pub const RESTITUTION_TOLERANCE: f32 = 1e-4;
 /// `contact_batch::column_face`). A column of small cubes whose faces are levelled in tilt
 /// stands only once the column converges, not each face: with no more passes five 1 cm
 /// cubes fell at 60 Hz × 4 (sooner than unlevelled), with four they still fell, with eight
-/// every column of `tests/stacking.rs` stays up but ten 1 mm cubes (five lean by a quarter
-/// of a cube at 120 Hz × 4); eight sweeps within each face alone did nothing. Bounded
-/// `[0, ∞)`: each pass costs one solve of those batches (the 20-box stack at 30 Hz × 2,
-/// which falls either way, costs 1.6× rapier instead of 1.0×).
-pub const COLUMN_PASSES: u32 = 8;
+/// the columns of `tests/stacking.rs` stood at the step's stiffness cap; eight sweeps within
+/// each face alone did nothing. Settled column faces stiffen further
+/// (`softness::COLUMN_MAX_SUBSTEP_FRACTION`), which takes more: with 16 or 24 five 1 cm and
+/// ten 3 cm cubes at 30 Hz × 2 fell, with 32 they stand. Bounded `[0, ∞)`: each pass costs
+/// one solve of those batches, and only columns have them.
+pub const COLUMN_PASSES: u32 = 32;
 
 /// Parameters of one solver run (derived from `PhysicsSettings`).
 #[derive(Clone, Copy, Debug)]
