@@ -447,14 +447,13 @@ impl PhysicsWorld {
                 let omega_load = 2.0 * std::f32::consts::PI * load_hz;
                 // Most contacts settle within their budget at the load stiffness: nothing more.
                 let within_budget = load_accel <= budget * omega_load * omega_load;
-                let needed = Softness::size_hertz(load_accel, budget);
                 // The softness and stiffness, Hz, of the face stiffened for its budget up to
                 // `max_hz`.
                 let stiffen = |max_hz: f32| {
                     if within_budget {
                         return (Softness::new(load_hz, s.contact_damping_ratio, h), load_hz);
                     }
-                    let size_hz = needed.min(max_hz);
+                    let size_hz = Softness::size_hertz(load_accel, budget).min(max_hz);
                     let used = size_hz.max(load_hz);
                     let softness = if size_hz > load_hz {
                         // The mass it carries, in units of its own effective mass.
@@ -496,8 +495,8 @@ impl PhysicsWorld {
                 // Resting: every point touching and closing or parting slower than
                 // `column_rest_speed`. Tested last: the cheap tests rule out nearly every face
                 // first.
-                let rest_speed = column_rest_speed(budget, used_hz, g, s.dt);
                 let resting = |c: &ContactConstraint| {
+                    let rest_speed = column_rest_speed(budget, used_hz, g, s.dt);
                     points[..count].iter().all(|cp| {
                         cp.base_separation <= c.touching && cp.relative_velocity.abs() <= rest_speed
                     })
@@ -528,6 +527,7 @@ impl PhysicsWorld {
                     if depth > OVERLOAD_DEPTH_FACTOR * budget {
                         let stiffening = (final_hz / base_hz).powi(2);
                         let carried = if g > 0.0 { own_accel / g } else { stiffening };
+                        let needed = Softness::size_hertz(load_accel, budget);
                         overloads.push((r.pair, depth, budget, needed, carried));
                     }
                 }
