@@ -219,15 +219,17 @@ pub fn column_face(load_ratio: f32, hertz: f32, h: f32) -> bool {
 /// column come and go); from 2 to 30 they stand 10 % deep instead of 18 %.
 pub const COLUMN_SETTLE_STEPS: u16 = 10;
 
-/// A column face is resting while each point closes or parts slower than this fraction of
-/// a step of free fall, `g·dt` (and than its depth budget in a step or a period of the
-/// face's own stiffness, whichever is longer): a tumbling pile is not a column (taken for
-/// one, the 100-row pyramid's collapse at `fast` threw bricks 560 m instead of 120), but a
-/// stiff face at rest starts its steps with the soft step's correction velocity (−3.7 mm/s
-/// on the static ground face of ten 3 mm cubes at 60 Hz × 4, its whole budget in a step):
-/// tested against the budget in a step alone, it flickered in and out. Bounded `(0.03, 1]`:
-/// at 0.03 ten 3 cm and ten 10 cm cubes at 30 Hz × 2 fell again; from 0.1 to 1 the columns
-/// of `tests/stacking.rs` and the pyramids' figures are the same.
+/// A column face is resting while each point closes or parts slower than its depth budget in
+/// a step, or, where that is slower, than its budget in a period of the face's own
+/// stiffness but no faster than this fraction of a step of free fall, `g·dt`. A tumbling
+/// pile is not a column (taken for one, the 100-row pyramid's collapse at `fast` threw
+/// bricks 560 m instead of 120), but a stiff face at rest starts its steps with the soft
+/// step's correction velocity (−3.7 mm/s on the static ground face of ten 3 mm cubes at
+/// 60 Hz × 4, its whole budget in a step): tested against the budget in a step alone, its
+/// flag flickered. Bounded `(0.03, 1]`: at 0.03 ten 3 cm cubes at 30 Hz × 2 fell again;
+/// from 0.1 to 1 the columns of `tests/stacking.rs` stand and fall alike. (Capping the
+/// budget in a step by it too, not only the period's, flickered the faces of the 20-box
+/// stack of 1 m boxes at 30 Hz × 1, which vibrate faster than that: it fell.)
 pub const COLUMN_REST_FREE_FALL_FRACTION: f32 = 0.1;
 
 /// Fastest a column face's point may close or part and still be resting (see
@@ -236,8 +238,9 @@ pub const COLUMN_REST_FREE_FALL_FRACTION: f32 = 0.1;
 #[must_use]
 #[inline]
 pub fn column_rest_speed(budget: f32, hertz: f32, g: f32, dt: f32) -> f32 {
-    let rate = (2.0 * std::f32::consts::PI * hertz).max(1.0 / dt);
-    (budget * rate).min(COLUMN_REST_FREE_FALL_FRACTION * g * dt)
+    let per_step = budget / dt;
+    let per_period = budget * 2.0 * std::f32::consts::PI * hertz;
+    per_step.max(per_period.min(COLUMN_REST_FREE_FALL_FRACTION * g * dt))
 }
 
 /// Whether a face with friction of stiffness `hertz` under bodies of `size` metres is
