@@ -180,8 +180,8 @@ pub const LOADED_LEVEL_SHARE: f32 = 0.4;
 /// (0) made the 20-row pyramid slump 3–6 cm instead of 2.5 cm.
 pub const TILT_LEVEL_FRACTION: f32 = 2.0 / 3.0;
 
-/// Load ratio past which a face is part of a column (see [`column_face`]): it carries more
-/// than the body on it.
+/// Load past which a face is part of a column (see [`column_face`]): it carries more than
+/// the body on it.
 pub const COLUMN_LOAD_RATIO: f32 = 1.5;
 
 /// `h·ω` of a face's stiffness past which its column is not solved by one iteration (see
@@ -191,9 +191,10 @@ pub const COLUMN_LOAD_RATIO: f32 = 1.5;
 /// 60 Hz × 4 (and its bricks rest on two faces, so none is a column face).
 pub const COLUMN_STIFFNESS: f32 = 1.0;
 
-/// Whether a face with its `load_ratio` and a stiffness of `hertz` at substep `h` is a column
-/// face: levelled in tilt ([`LEVEL_SHARE`]) and solved again after the iterations
-/// (`solve::COLUMN_PASSES`).
+/// Whether a face that carries `carried` (its load ratio between two dynamic bodies, its load
+/// in weights of the body on it on a static one), with a stiffness of `hertz` at substep
+/// `h`, is a column face: levelled in tilt ([`LEVEL_SHARE`]) and solved again after the
+/// iterations (`solve::COLUMN_PASSES`).
 ///
 /// A face stiffened only as far as its depth budget needs is soft in tilt (`k_θ = W·w/(4β)`
 /// for a load `W` on a face `w` wide with a depth budget `β` of it), and the faces of a
@@ -209,8 +210,8 @@ pub const COLUMN_STIFFNESS: f32 = 1.0;
 /// stack taken for one cost the stack 30 %).
 #[must_use]
 #[inline]
-pub fn column_face(load_ratio: f32, hertz: f32, h: f32) -> bool {
-    load_ratio > COLUMN_LOAD_RATIO && h * 2.0 * std::f32::consts::PI * hertz > COLUMN_STIFFNESS
+pub fn column_face(carried: f32, hertz: f32, h: f32) -> bool {
+    carried > COLUMN_LOAD_RATIO && h * 2.0 * std::f32::consts::PI * hertz > COLUMN_STIFFNESS
 }
 
 /// Steps running a face must have been a column face before it may stiffen past the step's
