@@ -191,10 +191,10 @@ pub const COLUMN_LOAD_RATIO: f32 = 1.5;
 /// 60 Hz × 4 (and its bricks rest on two faces, so none is a column face).
 pub const COLUMN_STIFFNESS: f32 = 1.0;
 
-/// Whether a face that carries `carried` (its load ratio between two dynamic bodies, its load
-/// in weights of the body on it on a static one), with a stiffness of `hertz` at substep
-/// `h`, is a column face: levelled in tilt ([`LEVEL_SHARE`]) and solved again after the
-/// iterations (`solve::COLUMN_PASSES`).
+/// Whether a face that carries `carried` (its load ratio; on a static body no more than its
+/// load in weights of the body on it), with a stiffness of `hertz` at substep `h`, is a
+/// column face: levelled in tilt ([`LEVEL_SHARE`]) and solved again after the iterations
+/// (`solve::COLUMN_PASSES`).
 ///
 /// A face stiffened only as far as its depth budget needs is soft in tilt (`k_θ = W·w/(4β)`
 /// for a load `W` on a face `w` wide with a depth budget `β` of it), and the faces of a
