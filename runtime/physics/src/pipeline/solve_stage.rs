@@ -509,11 +509,12 @@ impl PhysicsWorld {
                 // one, and the top face of a column belongs to it. The weights alone, in place
                 // of the ratio on static faces, took more of the 100-row pyramid's collapse at
                 // fast for columns and threw its bricks 477 m instead of 100.)
-                let carried = || {
-                    let m = mass_of(&states[upper as usize]);
+                let column_load = || {
                     if r.writes == 3 {
-                        ratio
-                    } else if m > 0.0 {
+                        return ratio;
+                    }
+                    let m = mass_of(&states[upper as usize]);
+                    if m > 0.0 {
                         ratio.min(load / (m * g_h))
                     } else {
                         0.0
@@ -522,7 +523,7 @@ impl PhysicsWorld {
                 c.column = c.block.patch
                     && g > 0.0
                     && used_hz > load_hz
-                    && column_face(carried(), used_hz, h)
+                    && column_face(column_load(), used_hz, h)
                     && hidden_factor <= 1.0
                     && c.mass_scale == [1.0; 2]
                     && single(upper)
