@@ -432,11 +432,10 @@ impl PhysicsWorld {
                 let touching = points[..count]
                     .iter()
                     .any(|cp| cp.base_separation <= s.linear_slop);
-                let weight = if touching {
-                    g * mass_of(&states[upper as usize])
-                } else {
-                    0.0
-                };
+                // The body on the face (its weight, the mass that moves rigidly with the face,
+                // what a static face carries in its weights).
+                let upper_mass = mass_of(&states[upper as usize]);
+                let weight = if touching { g * upper_mass } else { 0.0 };
                 let load_accel = if mass > 0.0 {
                     (remembered / (mass * h)).max(weight / mass)
                 } else {
@@ -468,10 +467,7 @@ impl PhysicsWorld {
                         // in it: its largest displacement over five starts was 0.81–3.21 m
                         // (mean 2.17), now 0.68–1.86 m (mean 1.35; rapier 0.68 m).
                         let rigid = if mass > 0.0 {
-                            jointed
-                                .get(upper)
-                                .unwrap_or_else(|| mass_of(&states[upper as usize]))
-                                / mass
+                            jointed.get(upper).unwrap_or(upper_mass) / mass
                         } else {
                             f32::MAX
                         };
@@ -513,9 +509,8 @@ impl PhysicsWorld {
                     if r.writes == 3 {
                         return ratio;
                     }
-                    let m = mass_of(&states[upper as usize]);
-                    if m > 0.0 {
-                        ratio.min(load / (m * g_h))
+                    if upper_mass > 0.0 {
+                        ratio.min(load / (upper_mass * g_h))
                     } else {
                         0.0
                     }
