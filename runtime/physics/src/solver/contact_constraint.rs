@@ -4,6 +4,7 @@
 use glam::{Mat3A, Vec3A};
 
 use super::body_state::BodyState;
+use super::lanes::{F, LANES, V3};
 use super::softness::Softness;
 use super::solver_body::SolverBody;
 
@@ -254,53 +255,83 @@ pub(crate) fn prepare(
         inv_i: Mat3A::from(bodies[c.body_b as usize].inv_i) * kb,
     };
     let n = c.normal;
-    let inv_count = 1.0 / anchors.len().max(1) as f32;
+    let count = anchors.len().min(points.len()).min(LANES);
+    let inv_count = 1.0 / count.max(1) as f32;
     let (mut ca, mut cb) = (Vec3A::ZERO, Vec3A::ZERO);
-    for &(ra, rb) in anchors {
+    for &(ra, rb) in &anchors[..count] {
         ca += ra;
         cb += rb;
     }
     ca *= inv_count;
     cb *= inv_count;
     let angular = c.angular;
-    for (cp, &(ra, rb)) in points.iter_mut().zip(anchors) {
-        let (k, dv) = if angular {
-            cp.rn_a = ra.cross(n);
-            cp.rn_b = rb.cross(n);
-            cp.irn_a = a.inv_i * cp.rn_a;
-            cp.irn_b = b.inv_i * cp.rn_b;
-            // `J M⁻¹ Jᵀ` from the Jacobians just computed (the same products, not recomputed).
-            let k = n.dot(a.inv_mass * n)
-                + n.dot(b.inv_mass * n)
-                + cp.rn_a.dot(cp.irn_a)
-                + cp.rn_b.dot(cp.irn_b);
-            (k, sb.v + sb.w.cross(rb) - sa.v - sa.w.cross(ra))
-        } else {
-            (n.dot(a.inv_mass * n) + n.dot(b.inv_mass * n), sb.v - sa.v)
-        };
-        cp.inv_normal_mass = k;
-        cp.normal_mass = if k > 0.0 { 1.0 / k } else { 0.0 };
-        cp.relative_velocity = dv.dot(n);
+    // The points side by side, one per lane (lanes past `count` hold zero anchors, and
+    // what they compute is not used): a manifold's four Jacobians, masses and couplings in
+    // the instructions of one, with one division and one square root for all.
+    let lanes = |side: fn(&(Vec3A, Vec3A)) -> Vec3A| {
+        V3::from_lanes(std::array::from_fn(|k| {
+            anchors[..count].get(k).map_or(Vec3A::ZERO, side)
+        }))
+    };
+    let (ra, rb) = (lanes(|p| p.0), lanes(|p| p.1));
+    let nl = V3::splat(n);
+    let k_lin = n.dot(a.inv_mass * n) + n.dot(b.inv_mass * n);
+    let (rn_a, rn_b, irn_a, irn_b, dv) = if angular {
+        let (rn_a, rn_b) = (ra.cross(nl), rb.cross(nl));
+        let dv = V3::splat(sb.v - sa.v) + V3::splat(sb.w).cross(rb) - V3::splat(sa.w).cross(ra);
+        (
+            rn_a,
+            rn_b,
+            rn_a.transformed(&a.inv_i),
+            rn_b.transformed(&b.inv_i),
+            dv,
+        )
+    } else {
+        let z = V3::ZERO;
+        (z, z, z, z, V3::splat(sb.v - sa.v))
+    };
+    // `J M⁻¹ Jᵀ` from the Jacobians just computed (the same products, not recomputed).
+    let k = F::splat(k_lin) + rn_a.dot(irn_a) + rn_b.dot(irn_b);
+    let normal_mass = k.simd_gt(F::ZERO).select(F::ONE / k, F::ZERO);
+    let off = ra - V3::splat(ca);
+    let off = off - nl.scale(off.dot(nl));
+    let twist_lever = off.dot(off).sqrt();
+    let relative_velocity = dv.dot(nl);
+    let (k, normal_mass) = (k.to_array(), normal_mass.to_array());
+    let (twist_lever, relative_velocity) = (twist_lever.to_array(), relative_velocity.to_array());
+    let (rn_al, rn_bl) = (rn_a.to_lanes(), rn_b.to_lanes());
+    let (irn_al, irn_bl) = (irn_a.to_lanes(), irn_b.to_lanes());
+    for (i, cp) in points[..count].iter_mut().enumerate() {
+        if angular {
+            cp.rn_a = rn_al[i];
+            cp.rn_b = rn_bl[i];
+            cp.irn_a = irn_al[i];
+            cp.irn_b = irn_bl[i];
+        }
+        cp.inv_normal_mass = k[i];
+        cp.normal_mass = normal_mass[i];
+        cp.relative_velocity = relative_velocity[i];
         cp.restitution_velocity = f32::NAN;
-        let off = ra - ca;
-        cp.twist_lever = (off - n * off.dot(n)).length();
+        cp.twist_lever = twist_lever[i];
         cp.max_normal_impulse = 0.0;
     }
-    let count = anchors.len().min(points.len()).min(4);
+    // The block, a row at a time: row `i` holds `K_ij = J_i M⁻¹ J_jᵀ` in lane `j` (its
+    // diagonal is `k` above, the same products in the same order); the row sums add the
+    // rows of the points there are.
     let block = &mut c.block;
     *block = NormalBlock::default();
-    let k_lin = n.dot(a.inv_mass * n) + n.dot(b.inv_mass * n);
+    let mut row_sum = F::ZERO;
+    let used = F::new(std::array::from_fn(|j| if j < count { 1.0 } else { 0.0 }));
     for i in 0..count {
-        block.row_sum[i] += points[i].inv_normal_mass;
+        let row = F::splat(k_lin) + irn_a.dot(V3::splat(rn_al[i])) + irn_b.dot(V3::splat(rn_bl[i]));
+        row_sum += row * used;
+        let row = row.to_array();
         for j in i + 1..count {
-            let (pi, pj) = (&points[i], &points[j]);
-            let k = k_lin + pi.rn_a.dot(pj.irn_a) + pi.rn_b.dot(pj.irn_b);
-            block.coupling[PAIR_SLOT[i][j]] = k;
-            block.row_sum[i] += k;
-            block.row_sum[j] += k;
+            block.coupling[PAIR_SLOT[i][j]] = row[j];
         }
     }
-    if count > 1 && points[..count].iter().all(|cp| cp.normal_mass > 0.0) {
+    block.row_sum = row_sum.to_array();
+    if count > 1 && normal_mass[..count].iter().all(|&m| m > 0.0) {
         let sum: f32 = block.row_sum[..count].iter().sum();
         block.patch_k = sum / (count * count) as f32;
         block.patch = block.patch_k > 0.0;
@@ -326,8 +357,8 @@ pub(crate) fn prepare(
     } else {
         sb.v - sa.v
     };
-    let slip = (dv - n * dv.dot(n)).length();
-    f.friction = if slip < static_speed {
+    let slip = dv - n * dv.dot(n);
+    f.friction = if slip.length_squared() < static_speed * static_speed {
         friction_s
     } else {
         friction_d

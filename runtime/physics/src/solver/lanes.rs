@@ -4,7 +4,7 @@
 
 use std::ops::{Add, AddAssign, Mul, Neg, Sub, SubAssign};
 
-use glam::Vec3A;
+use glam::{Mat3A, Vec3A};
 use wide::f32x4;
 
 use super::body_state::BodyState;
@@ -35,6 +35,38 @@ impl V3 {
     pub fn from_lanes(v: [Vec3A; LANES]) -> Self {
         let [x, y, z, _] = F::transpose(v.map(|v| F::new(v.extend(0.0).to_array())));
         Self { x, y, z }
+    }
+
+    /// `v` in every lane.
+    #[inline(always)]
+    pub fn splat(v: Vec3A) -> Self {
+        Self {
+            x: F::splat(v.x),
+            y: F::splat(v.y),
+            z: F::splat(v.z),
+        }
+    }
+
+    /// Lane by lane `self × o`.
+    #[inline(always)]
+    pub fn cross(self, o: Self) -> Self {
+        Self {
+            x: self.y * o.z - self.z * o.y,
+            y: self.z * o.x - self.x * o.z,
+            z: self.x * o.y - self.y * o.x,
+        }
+    }
+
+    /// `m` times the vector of each lane.
+    #[inline(always)]
+    pub fn transformed(self, m: &Mat3A) -> Self {
+        let col = |c: Vec3A| Self::splat(c);
+        let (cx, cy, cz) = (col(m.x_axis), col(m.y_axis), col(m.z_axis));
+        Self {
+            x: cx.x * self.x + cy.x * self.y + cz.x * self.z,
+            y: cx.y * self.x + cy.y * self.y + cz.y * self.z,
+            z: cx.z * self.x + cy.z * self.y + cz.z * self.z,
+        }
     }
 
     /// Sets lane `l` to `v`.
@@ -208,7 +240,7 @@ mod tests {
     use super::*;
 
     #[test]
-    fn lanes_round_trip_and_dot_matches_glam() {
+    fn lanes_round_trip_and_their_arithmetic_matches_glam() {
         let a = [
             Vec3A::new(1.0, 2.0, 3.0),
             Vec3A::new(-4.0, 5.5, 0.25),
@@ -223,5 +255,12 @@ mod tests {
             assert_eq!(dots[l], a[l].dot(b[l]));
         }
         assert_eq!((va * vb - vb).to_lanes()[2], a[2] * b[2] - b[2]);
+        let m = Mat3A::from_cols_array(&[1.0, -2.0, 0.5, 3.0, 0.25, -1.0, 4.0, 2.0, -0.75]);
+        let (cross, product) = (va.cross(vb).to_lanes(), va.transformed(&m).to_lanes());
+        for l in 0..LANES {
+            assert!((cross[l] - a[l].cross(b[l])).abs().max_element() <= 1e-5);
+            assert!((product[l] - m * a[l]).abs().max_element() <= 1e-5);
+            assert_eq!(V3::splat(a[l]).to_lanes(), [a[l]; LANES]);
+        }
     }
 }
