@@ -2,7 +2,7 @@
 
 use std::collections::HashMap;
 
-use glam::Vec3;
+use glam::{Mat3A, Vec3, Vec3A};
 
 use super::collide::{collide, CollideScratch};
 use super::contact_manifold::ContactManifold;
@@ -603,19 +603,22 @@ fn refresh_manifolds(
     d_ab: Vec3,
     margin: f32,
 ) {
-    let (rot_a, rot_b) = (ba.rotation, bb.rotation);
-    let com_a = rot_a * ba.local_com;
-    let com_b = d_ab + rot_b * bb.local_com;
+    // Rotation matrices once per pair, in SIMD vectors: every point turns with both bodies,
+    // and a matrix product is about half a quaternion rotation's arithmetic.
+    let (rot_a, rot_b) = (Mat3A::from_quat(ba.rotation), Mat3A::from_quat(bb.rotation));
+    let d_ab = Vec3A::from(d_ab);
+    let com_a = rot_a * Vec3A::from(ba.local_com);
+    let com_b = d_ab + rot_b * Vec3A::from(bb.local_com);
     let mut min_sep = f32::MAX;
     for m in &mut pair.manifolds {
-        let n = m.normal;
+        let n = Vec3A::from(m.normal);
         for p in &mut m.points {
-            let pa = rot_a * p.local_a;
-            let pb = d_ab + rot_b * p.local_b;
+            let pa = rot_a * Vec3A::from(p.local_a);
+            let pb = d_ab + rot_b * Vec3A::from(p.local_b);
             p.separation = p.generated_separation + (pb - pa).dot(n);
             let mid = (pa + pb) * 0.5;
-            p.anchor_a = mid - com_a;
-            p.anchor_b = mid - com_b;
+            p.anchor_a = (mid - com_a).into();
+            p.anchor_b = (mid - com_b).into();
             min_sep = min_sep.min(p.separation);
         }
         // Points that drifted beyond the speculative margin are dropped, as generation would.
