@@ -364,3 +364,177 @@ pub(crate) fn prepare(
         friction_d
     };
 }
+
+#[cfg(test)]
+mod tests {
+    use glam::{Mat3, Vec3};
+
+    use super::*;
+
+    /// Two bodies with full (non-diagonal) inverse inertias, moving and spinning, and a
+    /// manifold of some points between them.
+    struct Scene {
+        c: ContactConstraint,
+        anchors: Vec<(Vec3A, Vec3A)>,
+        bodies: Vec<SolverBody>,
+        states: Vec<BodyState>,
+    }
+
+    fn scene(count: usize, angular: bool) -> Scene {
+        let inv_i = |d: f32| {
+            let m = Mat3::from_cols(
+                Vec3::new(d, 0.1, -0.05),
+                Vec3::new(0.1, 2.0 * d, 0.2),
+                Vec3::new(-0.05, 0.2, 1.5 * d),
+            );
+            SolverBody {
+                inv_i: m,
+                ..SolverBody::STATIC
+            }
+        };
+        let bodies = vec![inv_i(0.7), inv_i(0.3)];
+        let state = |inv_mass: f32, v: Vec3A, w: Vec3A| BodyState {
+            v,
+            w,
+            inv_mass: Vec3A::splat(inv_mass),
+            ..BodyState::STATIC
+        };
+        let states = vec![
+            state(0.5, Vec3A::new(0.3, -1.0, 0.2), Vec3A::new(0.5, 0.1, -0.7)),
+            state(0.25, Vec3A::new(-0.4, 0.6, 0.1), Vec3A::new(-0.2, 0.9, 0.4)),
+        ];
+        let normal = Vec3A::new(0.2, 0.9, -0.1).normalize();
+        let t1 = normal.any_orthonormal_vector();
+        let c = ContactConstraint {
+            body_a: 0,
+            body_b: 1,
+            writes: 3,
+            angular,
+            normal,
+            tangent: [t1, normal.cross(t1)],
+            mass_scale: [1.0; 2],
+            count: count as u8,
+            ..ContactConstraint::default()
+        };
+        let anchors = [
+            (Vec3A::new(0.5, -0.4, 0.3), Vec3A::new(-0.2, 0.6, 0.1)),
+            (Vec3A::new(-0.5, -0.4, 0.35), Vec3A::new(0.4, 0.5, -0.3)),
+            (Vec3A::new(0.45, -0.5, -0.3), Vec3A::new(-0.3, 0.7, 0.5)),
+            (Vec3A::new(-0.6, -0.3, -0.25), Vec3A::new(0.2, 0.4, 0.6)),
+        ];
+        Scene {
+            c,
+            anchors: anchors[..count].to_vec(),
+            bodies,
+            states,
+        }
+    }
+
+    fn close(a: f32, b: f32) -> bool {
+        (a - b).abs() <= 1e-5 * (1.0 + a.abs().max(b.abs()))
+    }
+
+    #[test]
+    fn prepared_points_hold_their_effective_masses_couplings_and_velocities() {
+        for count in 1..=4 {
+            let Scene {
+                mut c,
+                anchors,
+                bodies,
+                states,
+            } = scene(count, true);
+            let mut points = [ConstraintPoint::default(); 4];
+            prepare(
+                &mut c,
+                &mut points[..count],
+                &anchors,
+                &bodies,
+                &states,
+                0.6,
+                0.4,
+                0.05,
+            );
+            let n = c.normal;
+            let (ia, ib) = (Mat3A::from(bodies[0].inv_i), Mat3A::from(bodies[1].inv_i));
+            let (sa, sb) = (&states[0], &states[1]);
+            let lin = n.dot(sa.inv_mass * n) + n.dot(sb.inv_mass * n);
+            // `K_ij = J_i M⁻¹ J_jᵀ`, the Jacobian of point i being (−n, −rₐ×n, n, r_b×n).
+            let k = |i: usize, j: usize| {
+                let ((ra_i, rb_i), (ra_j, rb_j)) = (anchors[i], anchors[j]);
+                lin + ra_i.cross(n).dot(ia * ra_j.cross(n)) + rb_i.cross(n).dot(ib * rb_j.cross(n))
+            };
+            let centre = anchors.iter().map(|a| a.0).sum::<Vec3A>() / count as f32;
+            let mut row_sum = [0.0f32; 4];
+            for i in 0..count {
+                let (ra, rb) = anchors[i];
+                let p = &points[i];
+                assert!(close(p.inv_normal_mass, k(i, i)), "{count} points, k{i}{i}");
+                assert!(close(p.normal_mass, 1.0 / k(i, i)));
+                let dv = sb.v + sb.w.cross(rb) - sa.v - sa.w.cross(ra);
+                assert!(close(p.relative_velocity, dv.dot(n)));
+                let off = ra - centre;
+                assert!(close(p.twist_lever, (off - n * off.dot(n)).length()));
+                assert!((p.rn_a - ra.cross(n)).length() <= 1e-6);
+                assert!((p.irn_b - ib * rb.cross(n)).length() <= 1e-6);
+                for j in 0..count {
+                    row_sum[j] += k(i, j);
+                    if i < j {
+                        assert!(close(c.block.coupling[PAIR_SLOT[i][j]], k(i, j)), "k{i}{j}");
+                    }
+                }
+            }
+            for (j, (&got, &want)) in c.block.row_sum.iter().zip(&row_sum).enumerate() {
+                assert!(close(got, want), "{count} points, row {j}");
+            }
+            assert_eq!(c.block.patch, count > 1);
+            if count > 1 {
+                let total: f32 = row_sum.iter().sum();
+                assert!(close(c.block.patch_k, total / (count * count) as f32));
+            }
+        }
+    }
+
+    #[test]
+    fn points_of_bodies_that_cannot_rotate_couple_through_their_masses_alone() {
+        let Scene {
+            mut c,
+            anchors,
+            bodies,
+            states,
+        } = scene(4, false);
+        // Scratch left by an earlier manifold's lever arms must not reach the block.
+        let stale = ConstraintPoint {
+            rn_a: Vec3A::ONE,
+            rn_b: Vec3A::ONE,
+            irn_a: Vec3A::ONE,
+            irn_b: Vec3A::ONE,
+            ..ConstraintPoint::default()
+        };
+        let mut points = [stale; 4];
+        prepare(
+            &mut c,
+            &mut points,
+            &anchors,
+            &bodies,
+            &states,
+            0.6,
+            0.4,
+            0.05,
+        );
+        let n = c.normal;
+        let lin = n.dot(states[0].inv_mass * n) + n.dot(states[1].inv_mass * n);
+        for cp in &points {
+            assert!(close(cp.inv_normal_mass, lin));
+            assert!(close(
+                cp.relative_velocity,
+                (states[1].v - states[0].v).dot(n)
+            ));
+        }
+        for k in c.block.coupling {
+            assert!(close(k, lin), "{k} vs {lin}");
+        }
+        for s in c.block.row_sum {
+            assert!(close(s, 4.0 * lin));
+        }
+    }
+}
