@@ -478,3 +478,27 @@ fn column_of_cubes(preset: PhysicsPreset, size: f32, count: usize) -> (f32, f32)
 fn columns_of_small_cubes_stand_at_balanced_and_precise() {
     assert_columns_stay_up(BALANCED_AND_PRECISE, &[0.001, 0.003], 0.05);
 }
+
+/// The faces of a column are named in `overloaded_contacts` once settled, under their
+/// settled loads, with the preset that holds them: five 1 mm cubes at balanced settle up to
+/// 14 % deep and name `precise`, where they settle within 4 % and nothing is named.
+#[test]
+fn an_overloaded_column_names_the_preset_that_holds_it() {
+    let reports = |preset: PhysicsPreset| {
+        let (mut w, _) = column_world(preset, 0.001, 5);
+        let mut reports = Vec::new();
+        for _ in 0..(3.0 / w.settings().dt) as usize {
+            reports.extend(w.step().overloaded_contacts.iter().copied());
+        }
+        reports
+    };
+    let balanced = reports(PhysicsPreset::Balanced);
+    assert!(!balanced.is_empty(), "five 1 mm cubes at balanced overload");
+    for o in &balanced {
+        assert_eq!(o.holding_preset, Some(PhysicsPreset::Precise), "{o:?}");
+        // Settled loads: every face carries at least the cube on it.
+        assert!(o.load_ratio >= 1.0, "{o:?}");
+    }
+    let precise = reports(PhysicsPreset::Precise);
+    assert!(precise.is_empty(), "named at precise: {precise:?}");
+}

@@ -51,10 +51,12 @@ pub struct ContactPair {
     pub(crate) size: f32,
     /// The pair was named in `StepOutput::overloaded_contacts` (once per pair).
     pub(crate) overload_reported: bool,
-    /// The step (`NarrowPhase::updates`) its own load last overloaded it: a pair is named
-    /// only when that happens in two steps running, so that an impact, whose impulse is the
-    /// load of one step only, is not.
+    /// The step (`NarrowPhase::updates`) its own load last overloaded it, and how many
+    /// steps running it had then: a pair is named only once that reaches
+    /// `OVERLOAD_SUSTAIN_STEPS`, so that an impact, whose impulse is the load of one step
+    /// only, and a body settling into its place are not.
     pub(crate) overloaded_at: Option<u32>,
+    pub(crate) overloaded_steps: u16,
     /// Largest per-substep normal impulse a manifold of the pair carried recently, N·s,
     /// decaying with half-life `solver::softness::LOAD_MEMORY_HALF_LIFE`: the load its
     /// contact stiffens for (a bounce that unloads it for a step keeps it stiff).

@@ -155,6 +155,7 @@ impl NarrowPhase {
             size,
             overload_reported: false,
             overloaded_at: None,
+            overloaded_steps: 0,
             load_memory: 0.0,
             column_steps: 0,
         });

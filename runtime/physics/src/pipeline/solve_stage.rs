@@ -34,19 +34,45 @@ use crate::solver::Softness;
 /// size): a contact at the budget is what the setting asks for, twice is what a user sees.
 pub const OVERLOAD_DEPTH_FACTOR: f32 = 2.0;
 
+/// Steps running a contact must be overloaded to be reported: an impact loads one step, and
+/// a column settling into place presses its faces harder for a few (ten 3 mm cubes at
+/// precise were named at 3.2 times their budget while settling, then held 2.6 %).
+pub const OVERLOAD_SUSTAIN_STEPS: u16 = 10;
+
+/// A contact deeper than [`OVERLOAD_DEPTH_FACTOR`] times its budget in one step: a candidate
+/// for [`StepOutput::overloaded_contacts`](crate::StepOutput).
+struct Overload {
+    pair: u32,
+    /// Static deflection at the stiffest the contact gets, and the budget, m.
+    depth: f32,
+    budget: f32,
+    /// Stiffness that would hold it within `OVERLOAD_DEPTH_FACTOR` times the budget, Hz.
+    needed_hz: f32,
+    /// The load in weights of its own effective mass.
+    load_ratio: f32,
+    /// A column face (its cap is `Softness::max_column_hertz`).
+    column: bool,
+}
+
 impl PhysicsWorld {
     /// Names each overloaded pair once in the step output, with the cheapest preset whose
-    /// step would hold it (`needed`, Hz, within that preset's stiffness cap), once it has
-    /// been overloaded in two steps running (an impact's impulse loads one step only).
-    fn report_overloads(&mut self, overloads: &[(u32, f32, f32, f32, f32)]) {
+    /// step would hold it within the depth that names it (`needed_hz`, within that preset's
+    /// stiffness cap: a column face's where it is one), once it has been overloaded for
+    /// [`OVERLOAD_SUSTAIN_STEPS`] running.
+    fn report_overloads(&mut self, overloads: &[Overload]) {
         let now = self.narrowphase.updates;
-        for &(pi, depth, budget, needed, load_ratio) in overloads {
+        for o in overloads {
+            let pi = o.pair;
             let Some(pair) = self.narrowphase.pairs.get_mut(pi as usize) else {
                 continue;
             };
-            let sustained = pair.overloaded_at == Some(now.wrapping_sub(1));
+            pair.overloaded_steps = if pair.overloaded_at == Some(now.wrapping_sub(1)) {
+                pair.overloaded_steps.saturating_add(1)
+            } else {
+                1
+            };
             pair.overloaded_at = Some(now);
-            if pair.overload_reported || !sustained {
+            if pair.overload_reported || pair.overloaded_steps < OVERLOAD_SUSTAIN_STEPS {
                 continue;
             }
             pair.overload_reported = true;
@@ -60,15 +86,21 @@ impl PhysicsWorld {
             let mass_ratio = (ma > 0.0 && mb > 0.0).then(|| ma.max(mb) / ma.min(mb));
             let holding_preset = PhysicsPreset::ALL.into_iter().find(|p| {
                 let dt = 1.0 / p.step_hz();
-                needed <= Softness::max_size_hertz(dt / p.substeps() as f32, dt)
+                let h = dt / p.substeps() as f32;
+                let cap = if o.column {
+                    Softness::max_column_hertz(h, dt)
+                } else {
+                    Softness::max_size_hertz(h, dt)
+                };
+                o.needed_hz <= cap
             });
             self.output.overloaded_contacts.push(OverloadedContact {
                 body_a: pair.body_a,
                 body_b: pair.body_b,
-                load_ratio,
+                load_ratio: o.load_ratio,
                 mass_ratio,
-                expected_depth: depth,
-                allowed_depth: budget,
+                expected_depth: o.depth,
+                allowed_depth: o.budget,
                 holding_preset,
             });
         }
@@ -300,260 +332,270 @@ impl PhysicsWorld {
             &self.manifold_refs,
             &mut self.supports,
         );
-        let mut prepare_one =
-            |r: &ManifoldRef,
-             out: &mut PreparedManifold,
-             overloads: &mut Vec<(u32, f32, f32, f32, f32)>| {
-                // Written in place: the constraint whole, the first `count` points field by field.
-                let PreparedManifold {
-                    constraint: c,
-                    points,
-                } = out;
-                let pair = &pairs[r.pair as usize];
-                let m = &pair.manifolds[r.manifold as usize];
-                let n = m.normal;
-                let t1 = m.tangent1;
-                let t2 = n.cross(t1);
-                *c = ContactConstraint {
-                    body_a: r.body_a,
-                    body_b: r.body_b,
-                    writes: r.writes,
-                    angular: r.angular,
-                    normal: n.into(),
-                    tangent: [t1.into(), t2.into()],
-                    restitution: pair.restitution,
-                    elastic: false,
-                    column: false,
-                    bounce_accel: 0.0,
-                    pressing: [Vec3A::ZERO; 2],
-                    load_level_share: 0.0,
-                    mass_scale: support_mass_scale(pair, r, states, &s),
-                    softness: Softness::RIGID,
-                    touching: touching_distance(pair.size),
-                    count: r.count,
-                    friction: FrictionPart::default(),
-                    block: NormalBlock::default(),
-                };
-                let mut anchors = [(Vec3A::ZERO, Vec3A::ZERO); 4];
-                let (mut tangent, mut twist) = (Vec3::ZERO, 0.0f32);
-                let count = usize::from(r.count);
-                for (k, p) in m.points.iter().take(count).enumerate() {
-                    anchors[k] = (p.anchor_a.into(), p.anchor_b.into());
-                    tangent += p.tangent_impulse;
-                    twist += p.twist_impulse;
-                    points[k].base_separation = p.separation;
-                    // An impact's impulse is not a load (see `LaneResult::impact`).
-                    points[k].normal_impulse = if p.impact { 0.0 } else { p.normal_impulse };
-                }
-                c.friction.tangent_impulse = [tangent.dot(t1), tangent.dot(t2)];
-                c.friction.twist_impulse = twist;
-                prepare(
-                    c,
-                    &mut points[..count],
-                    &anchors[..count],
-                    bodies,
-                    states,
-                    pair.static_friction,
-                    pair.dynamic_friction,
-                    s.static_friction_speed,
-                );
-                let (upper, lower) = upper_lower(s.gravity, n, r.body_a, r.body_b);
-                // The friction bound of a support under a scaled light body carries the load
-                // the scaling hides from it (see `HiddenLoads`): folded into the coefficient
-                // (a field of its own in every constraint cost the 100-row pyramid, which has
-                // none, 5–10 %), except on faces levelled for having no friction.
-                let hidden_factor = hidden.factor(upper);
-                if hidden_factor > 1.0 && c.friction.friction >= LEVEL_MAX_FRICTION {
-                    c.friction.friction *= hidden_factor;
-                }
-                if pair.restitution > 0.0 {
-                    // Relative normal acceleration (gravity, forces, supports) for the impact
-                    // speed.
-                    let accel = n.dot(resting.get(r, 1) - resting.get(r, 0));
-                    c.bounce_accel = accel;
-                    c.pressing = [0, 1].map(|side| resting.pressing(r, side).into());
-                    for cp in &mut points[..count] {
-                        cp.restitution_velocity = bounce_velocity(
+        let mut prepare_one = |r: &ManifoldRef,
+                               out: &mut PreparedManifold,
+                               overloads: &mut Vec<Overload>| {
+            // Written in place: the constraint whole, the first `count` points field by field.
+            let PreparedManifold {
+                constraint: c,
+                points,
+            } = out;
+            let pair = &pairs[r.pair as usize];
+            let m = &pair.manifolds[r.manifold as usize];
+            let n = m.normal;
+            let t1 = m.tangent1;
+            let t2 = n.cross(t1);
+            *c = ContactConstraint {
+                body_a: r.body_a,
+                body_b: r.body_b,
+                writes: r.writes,
+                angular: r.angular,
+                normal: n.into(),
+                tangent: [t1.into(), t2.into()],
+                restitution: pair.restitution,
+                elastic: false,
+                column: false,
+                bounce_accel: 0.0,
+                pressing: [Vec3A::ZERO; 2],
+                load_level_share: 0.0,
+                mass_scale: support_mass_scale(pair, r, states, &s),
+                softness: Softness::RIGID,
+                touching: touching_distance(pair.size),
+                count: r.count,
+                friction: FrictionPart::default(),
+                block: NormalBlock::default(),
+            };
+            let mut anchors = [(Vec3A::ZERO, Vec3A::ZERO); 4];
+            let (mut tangent, mut twist) = (Vec3::ZERO, 0.0f32);
+            let count = usize::from(r.count);
+            for (k, p) in m.points.iter().take(count).enumerate() {
+                anchors[k] = (p.anchor_a.into(), p.anchor_b.into());
+                tangent += p.tangent_impulse;
+                twist += p.twist_impulse;
+                points[k].base_separation = p.separation;
+                // An impact's impulse is not a load (see `LaneResult::impact`).
+                points[k].normal_impulse = if p.impact { 0.0 } else { p.normal_impulse };
+            }
+            c.friction.tangent_impulse = [tangent.dot(t1), tangent.dot(t2)];
+            c.friction.twist_impulse = twist;
+            prepare(
+                c,
+                &mut points[..count],
+                &anchors[..count],
+                bodies,
+                states,
+                pair.static_friction,
+                pair.dynamic_friction,
+                s.static_friction_speed,
+            );
+            let (upper, lower) = upper_lower(s.gravity, n, r.body_a, r.body_b);
+            // The friction bound of a support under a scaled light body carries the load
+            // the scaling hides from it (see `HiddenLoads`): folded into the coefficient
+            // (a field of its own in every constraint cost the 100-row pyramid, which has
+            // none, 5–10 %), except on faces levelled for having no friction.
+            let hidden_factor = hidden.factor(upper);
+            if hidden_factor > 1.0 && c.friction.friction >= LEVEL_MAX_FRICTION {
+                c.friction.friction *= hidden_factor;
+            }
+            if pair.restitution > 0.0 {
+                // Relative normal acceleration (gravity, forces, supports) for the impact
+                // speed.
+                let accel = n.dot(resting.get(r, 1) - resting.get(r, 0));
+                c.bounce_accel = accel;
+                c.pressing = [0, 1].map(|side| resting.pressing(r, side).into());
+                for cp in &mut points[..count] {
+                    cp.restitution_velocity = bounce_velocity(
+                        cp.relative_velocity,
+                        cp.base_separation,
+                        accel,
+                        h,
+                        s.dt,
+                        pair.restitution,
+                        s.restitution_threshold,
+                    )
+                    .unwrap_or_else(|| {
+                        held_velocity(
                             cp.relative_velocity,
                             cp.base_separation,
                             accel,
-                            h,
                             s.dt,
                             pair.restitution,
-                            s.restitution_threshold,
                         )
-                        .unwrap_or_else(|| {
-                            held_velocity(
+                    });
+                }
+                // Elastic: no point's impact was made inelastic by the threshold (one
+                // that bounces without it but not with it).
+                let threshold = s.restitution_threshold;
+                c.elastic = pair.elastic()
+                    && points[..count].iter().all(|cp| {
+                        cp.restitution_velocity > 0.0
+                            || threshold == 0.0
+                            || bounce_velocity(
                                 cp.relative_velocity,
                                 cp.base_separation,
                                 accel,
+                                h,
                                 s.dt,
-                                pair.restitution,
+                                1.0,
+                                0.0,
                             )
-                        });
-                    }
-                    // Elastic: no point's impact was made inelastic by the threshold (one
-                    // that bounces without it but not with it).
-                    let threshold = s.restitution_threshold;
-                    c.elastic = pair.elastic()
-                        && points[..count].iter().all(|cp| {
-                            cp.restitution_velocity > 0.0
-                                || threshold == 0.0
-                                || bounce_velocity(
-                                    cp.relative_velocity,
-                                    cp.base_separation,
-                                    accel,
-                                    h,
-                                    s.dt,
-                                    1.0,
-                                    0.0,
-                                )
-                                .is_none()
-                        });
-                }
-                // Static contacts are twice as stiff (Box2D v3); both stiffen with load, and
-                // further where the load would press them deeper than the penetration budget
-                // of the smaller body's size.
-                let base_hz = if r.writes == 3 { hertz } else { 2.0 * hertz };
-                let (load, mass) = points[..count].iter().fold((0.0f32, 0.0f32), |(p, m), cp| {
-                    (p + cp.normal_impulse, m + cp.normal_mass)
-                });
-                let own = mass * g_h;
-                let ratio = if own > 0.0 { load / own } else { 1.0 };
-                let cap = if pair.ball_ball {
-                    max_ball_hertz
-                } else {
-                    max_hertz
-                };
-                // The load: the largest it carried recently, and from the step it is made at
-                // least the weight of the body on top (its warm-started load lags by steps, and
-                // a contact under a heavy body sinks meanwhile).
-                let remembered = load.max(pair.load_memory);
-                let touching = points[..count]
-                    .iter()
-                    .any(|cp| cp.base_separation <= s.linear_slop);
-                // The body on the face (its weight, the mass that moves rigidly with the face,
-                // what a static face carries in its weights).
-                let upper_mass = mass_of(&states[upper as usize]);
-                let weight = if touching { g * upper_mass } else { 0.0 };
-                let load_accel = if mass > 0.0 {
-                    (remembered / (mass * h)).max(weight / mass)
-                } else {
-                    0.0
-                };
-                let budget = s.max_penetration_fraction * pair.size;
-                let load_hz = Softness::load_hertz(base_hz, ratio, cap);
-                let omega_load = 2.0 * std::f32::consts::PI * load_hz;
-                // Most contacts settle within their budget at the load stiffness: nothing more.
-                let within_budget = load_accel <= budget * omega_load * omega_load;
-                // The softness and stiffness, Hz, of the face stiffened for its budget up to
-                // `max_hz`.
-                let stiffen = |max_hz: f32| {
-                    if within_budget {
-                        return (Softness::new(load_hz, s.contact_damping_ratio, h), load_hz);
-                    }
-                    let size_hz = Softness::size_hertz(load_accel, budget).min(max_hz);
-                    let used = size_hz.max(load_hz);
-                    let softness = if size_hz > load_hz {
-                        // The mass it carries, in units of its own effective mass.
-                        let stiffening = (used / base_hz).powi(2);
-                        let carried = if g > 0.0 { load_accel / g } else { stiffening };
-                        // Damped for the mass that moves rigidly with the contact: what it
-                        // carries, but no more than the body on it and the bodies jointed to
-                        // that one. Bodies resting further up hang on soft contacts of their
-                        // own (springs in series) and do not ring with this one; damped as if
-                        // they sat on it rigidly, the rows under the 100-row pyramid (ζ·10)
-                        // corrected position errors so slowly that an out-of-plane sway grew
-                        // in it: its largest displacement over five starts was 0.81–3.21 m
-                        // (mean 2.17), now 0.68–1.86 m (mean 1.35; rapier 0.68 m).
-                        let rigid = if mass > 0.0 {
-                            jointed.get(upper).unwrap_or(upper_mass) / mass
-                        } else {
-                            f32::MAX
-                        };
-                        Softness::for_supported_mass(
-                            size_hz,
-                            s.contact_damping_ratio,
-                            h,
-                            carried.max(stiffening).min(rigid),
-                        )
-                    } else {
-                        Softness::new(load_hz, s.contact_damping_ratio, h)
-                    };
-                    (softness, used)
-                };
-                let (softness, used_hz) = stiffen(max_size_hertz);
-                // Only a face stiffened past its load's stiffness for its size budget, between
-                // bodies resting on one face each: a column, not a pyramid (whose bricks rest
-                // on two and spread the load they carry), and not under a heavy body on a light
-                // one (`HiddenLoads` holds those).
-                let mut single = |i: u32| supports.single(i, manifolds, pairs, s.gravity);
-                // Resting: every point touching and closing or parting slower than
-                // `column_rest_speed`. Tested last: the cheap tests rule out nearly every face
-                // first.
-                let resting = |c: &ContactConstraint| {
-                    let rest_speed = column_rest_speed(budget, used_hz, g, s.dt);
-                    points[..count].iter().all(|cp| {
-                        cp.base_separation <= c.touching && cp.relative_velocity.abs() <= rest_speed
-                    })
-                };
-                // What the face carries: its load ratio, and on a static body no more than its
-                // load in weights of the body on it. The ratio is over the face's own effective
-                // mass, which its points' levers shrink: a lone 2 mm plate on the ground
-                // measured 1.75, a wedge 3.0, and got the column's passes every step. (Between
-                // two dynamic bodies the ratio stays: the effective mass is the pair's reduced
-                // one, and the top face of a column belongs to it. The weights alone, in place
-                // of the ratio on static faces, took more of the 100-row pyramid's collapse at
-                // fast for columns and threw its bricks 477 m instead of 100.)
-                let column_load = || {
-                    if r.writes == 3 {
-                        return ratio;
-                    }
-                    if upper_mass > 0.0 {
-                        ratio.min(load / (upper_mass * g_h))
-                    } else {
-                        0.0
-                    }
-                };
-                c.column = c.block.patch
-                    && g > 0.0
-                    && used_hz > load_hz
-                    && column_face(column_load(), used_hz, h)
-                    && hidden_factor <= 1.0
-                    && c.mass_scale == [1.0; 2]
-                    && single(upper)
-                    && single(lower)
-                    && resting(c);
-                // A column face settled for some steps may stiffen past the step's cap.
-                let (softness, final_hz) = if c.column && pair.column_steps >= COLUMN_SETTLE_STEPS {
-                    stiffen(max_column_hertz)
-                } else {
-                    (softness, used_hz)
-                };
-                c.softness = softness;
-                // Deeper than the budget allows even at the stiffest contact, under the load of
-                // this step (not the remembered one, which an impact fills for several steps):
-                // a candidate, named once it is one two steps running.
-                if !within_budget && load > 0.0 && !pair.overload_reported {
-                    let omega = 2.0 * std::f32::consts::PI * final_hz;
-                    let own_accel = (load / (mass * h)).max(weight / mass);
-                    let depth = own_accel / (omega * omega);
-                    if depth > OVERLOAD_DEPTH_FACTOR * budget {
-                        let stiffening = (final_hz / base_hz).powi(2);
-                        let carried = if g > 0.0 { own_accel / g } else { stiffening };
-                        let needed = Softness::size_hertz(load_accel, budget);
-                        overloads.push((r.pair, depth, budget, needed, carried));
-                    }
-                }
-                c.load_level_share = if c.column {
-                    LEVEL_SHARE
-                } else if levelled_for_load(ratio, used_hz, pair.size, g) {
-                    LOADED_LEVEL_SHARE
-                } else {
-                    0.0
-                };
+                            .is_none()
+                    });
+            }
+            // Static contacts are twice as stiff (Box2D v3); both stiffen with load, and
+            // further where the load would press them deeper than the penetration budget
+            // of the smaller body's size.
+            let base_hz = if r.writes == 3 { hertz } else { 2.0 * hertz };
+            let (load, mass) = points[..count].iter().fold((0.0f32, 0.0f32), |(p, m), cp| {
+                (p + cp.normal_impulse, m + cp.normal_mass)
+            });
+            let own = mass * g_h;
+            let ratio = if own > 0.0 { load / own } else { 1.0 };
+            let cap = if pair.ball_ball {
+                max_ball_hertz
+            } else {
+                max_hertz
             };
-        let mut overloads: Vec<(u32, f32, f32, f32, f32)> = Vec::new();
+            // The load: the largest it carried recently, and from the step it is made at
+            // least the weight of the body on top (its warm-started load lags by steps, and
+            // a contact under a heavy body sinks meanwhile).
+            let remembered = load.max(pair.load_memory);
+            let touching = points[..count]
+                .iter()
+                .any(|cp| cp.base_separation <= s.linear_slop);
+            // The body on the face (its weight, the mass that moves rigidly with the face,
+            // what a static face carries in its weights).
+            let upper_mass = mass_of(&states[upper as usize]);
+            let weight = if touching { g * upper_mass } else { 0.0 };
+            let load_accel = if mass > 0.0 {
+                (remembered / (mass * h)).max(weight / mass)
+            } else {
+                0.0
+            };
+            let budget = s.max_penetration_fraction * pair.size;
+            let load_hz = Softness::load_hertz(base_hz, ratio, cap);
+            let omega_load = 2.0 * std::f32::consts::PI * load_hz;
+            // Most contacts settle within their budget at the load stiffness: nothing more.
+            let within_budget = load_accel <= budget * omega_load * omega_load;
+            // The softness and stiffness, Hz, of the face stiffened for its budget up to
+            // `max_hz`.
+            let stiffen = |max_hz: f32| {
+                if within_budget {
+                    return (Softness::new(load_hz, s.contact_damping_ratio, h), load_hz);
+                }
+                let size_hz = Softness::size_hertz(load_accel, budget).min(max_hz);
+                let used = size_hz.max(load_hz);
+                let softness = if size_hz > load_hz {
+                    // The mass it carries, in units of its own effective mass.
+                    let stiffening = (used / base_hz).powi(2);
+                    let carried = if g > 0.0 { load_accel / g } else { stiffening };
+                    // Damped for the mass that moves rigidly with the contact: what it
+                    // carries, but no more than the body on it and the bodies jointed to
+                    // that one. Bodies resting further up hang on soft contacts of their
+                    // own (springs in series) and do not ring with this one; damped as if
+                    // they sat on it rigidly, the rows under the 100-row pyramid (ζ·10)
+                    // corrected position errors so slowly that an out-of-plane sway grew
+                    // in it: its largest displacement over five starts was 0.81–3.21 m
+                    // (mean 2.17), now 0.68–1.86 m (mean 1.35; rapier 0.68 m).
+                    let rigid = if mass > 0.0 {
+                        jointed.get(upper).unwrap_or(upper_mass) / mass
+                    } else {
+                        f32::MAX
+                    };
+                    Softness::for_supported_mass(
+                        size_hz,
+                        s.contact_damping_ratio,
+                        h,
+                        carried.max(stiffening).min(rigid),
+                    )
+                } else {
+                    Softness::new(load_hz, s.contact_damping_ratio, h)
+                };
+                (softness, used)
+            };
+            let (softness, used_hz) = stiffen(max_size_hertz);
+            // Only a face stiffened past its load's stiffness for its size budget, between
+            // bodies resting on one face each: a column, not a pyramid (whose bricks rest
+            // on two and spread the load they carry), and not under a heavy body on a light
+            // one (`HiddenLoads` holds those).
+            let mut single = |i: u32| supports.single(i, manifolds, pairs, s.gravity);
+            // Resting: every point touching and closing or parting slower than
+            // `column_rest_speed`. Tested last: the cheap tests rule out nearly every face
+            // first.
+            let resting = |c: &ContactConstraint| {
+                let rest_speed = column_rest_speed(budget, used_hz, g, s.dt);
+                points[..count].iter().all(|cp| {
+                    cp.base_separation <= c.touching && cp.relative_velocity.abs() <= rest_speed
+                })
+            };
+            // What the face carries: its load ratio, and on a static body no more than its
+            // load in weights of the body on it. The ratio is over the face's own effective
+            // mass, which its points' levers shrink: a lone 2 mm plate on the ground
+            // measured 1.75, a wedge 3.0, and got the column's passes every step. (Between
+            // two dynamic bodies the ratio stays: the effective mass is the pair's reduced
+            // one, and the top face of a column belongs to it. The weights alone, in place
+            // of the ratio on static faces, took more of the 100-row pyramid's collapse at
+            // fast for columns and threw its bricks 477 m instead of 100.)
+            let column_load = || {
+                if r.writes == 3 {
+                    return ratio;
+                }
+                if upper_mass > 0.0 {
+                    ratio.min(load / (upper_mass * g_h))
+                } else {
+                    0.0
+                }
+            };
+            c.column = c.block.patch
+                && g > 0.0
+                && used_hz > load_hz
+                && column_face(column_load(), used_hz, h)
+                && hidden_factor <= 1.0
+                && c.mass_scale == [1.0; 2]
+                && single(upper)
+                && single(lower)
+                && resting(c);
+            // A column face settled for some steps may stiffen past the step's cap.
+            let (softness, final_hz) = if c.column && pair.column_steps >= COLUMN_SETTLE_STEPS {
+                stiffen(max_column_hertz)
+            } else {
+                (softness, used_hz)
+            };
+            c.softness = softness;
+            // Deeper than the budget allows even at the stiffest contact, under the load of
+            // this step (not the remembered one, which an impact fills for several steps):
+            // a candidate, named once it is one two steps running.
+            // A column face is judged once settled (`COLUMN_SETTLE_STEPS`), at the stiffer
+            // contact it then gets and under its settled load: judged from its first steps, a
+            // column of five 1 mm cubes at balanced was named at up to twice the depth it
+            // settles at, and with no preset to hold it though `precise` does.
+            let settling = c.column && pair.column_steps < COLUMN_SETTLE_STEPS;
+            if !within_budget && load > 0.0 && !pair.overload_reported && !settling {
+                let omega = 2.0 * std::f32::consts::PI * final_hz;
+                let own_accel = (load / (mass * h)).max(weight / mass);
+                let depth = own_accel / (omega * omega);
+                if depth > OVERLOAD_DEPTH_FACTOR * budget {
+                    let stiffening = (final_hz / base_hz).powi(2);
+                    overloads.push(Overload {
+                        pair: r.pair,
+                        depth,
+                        budget,
+                        // Held where it would not be named: within the reported depth.
+                        needed_hz: Softness::size_hertz(load_accel, OVERLOAD_DEPTH_FACTOR * budget),
+                        load_ratio: if g > 0.0 { own_accel / g } else { stiffening },
+                        column: c.column,
+                    });
+                }
+            }
+            c.load_level_share = if c.column {
+                LEVEL_SHARE
+            } else if levelled_for_load(ratio, used_hz, pair.size, g) {
+                LOADED_LEVEL_SHARE
+            } else {
+                0.0
+            };
+        };
+        let mut overloads: Vec<Overload> = Vec::new();
         let prepare_one = |r: &ManifoldRef, out: &mut PreparedManifold| {
             prepare_one(r, out, &mut overloads);
         };
