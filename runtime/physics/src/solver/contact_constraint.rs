@@ -380,6 +380,14 @@ mod tests {
         states: Vec<BodyState>,
     }
 
+    impl Scene {
+        /// Prepares the manifold into `points` (friction 0.6 / 0.4, static below 5 cm/s).
+        fn prepare(&mut self, points: &mut [ConstraintPoint]) {
+            let (anchors, bodies, states) = (&self.anchors, &self.bodies, &self.states);
+            prepare(&mut self.c, points, anchors, bodies, states, 0.6, 0.4, 0.05);
+        }
+    }
+
     fn scene(count: usize, angular: bool) -> Scene {
         let inv_i = |d: f32| {
             let m = Mat3::from_cols(
@@ -437,23 +445,10 @@ mod tests {
     #[test]
     fn prepared_points_hold_their_effective_masses_couplings_and_velocities() {
         for count in 1..=4 {
-            let Scene {
-                mut c,
-                anchors,
-                bodies,
-                states,
-            } = scene(count, true);
+            let mut s = scene(count, true);
             let mut points = [ConstraintPoint::default(); 4];
-            prepare(
-                &mut c,
-                &mut points[..count],
-                &anchors,
-                &bodies,
-                &states,
-                0.6,
-                0.4,
-                0.05,
-            );
+            s.prepare(&mut points[..count]);
+            let (c, anchors, bodies, states) = (s.c, s.anchors, s.bodies, s.states);
             let n = c.normal;
             let (ia, ib) = (Mat3A::from(bodies[0].inv_i), Mat3A::from(bodies[1].inv_i));
             let (sa, sb) = (&states[0], &states[1]);
@@ -496,12 +491,7 @@ mod tests {
 
     #[test]
     fn points_of_bodies_that_cannot_rotate_couple_through_their_masses_alone() {
-        let Scene {
-            mut c,
-            anchors,
-            bodies,
-            states,
-        } = scene(4, false);
+        let mut s = scene(4, false);
         // Scratch left by an earlier manifold's lever arms must not reach the block.
         let stale = ConstraintPoint {
             rn_a: Vec3A::ONE,
@@ -511,16 +501,8 @@ mod tests {
             ..ConstraintPoint::default()
         };
         let mut points = [stale; 4];
-        prepare(
-            &mut c,
-            &mut points,
-            &anchors,
-            &bodies,
-            &states,
-            0.6,
-            0.4,
-            0.05,
-        );
+        s.prepare(&mut points);
+        let (c, states) = (s.c, s.states);
         let n = c.normal;
         let lin = n.dot(states[0].inv_mass * n) + n.dot(states[1].inv_mass * n);
         for cp in &points {
