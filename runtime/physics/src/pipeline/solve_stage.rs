@@ -562,9 +562,9 @@ impl PhysicsWorld {
                 (softness, used_hz)
             };
             c.softness = softness;
-            // Deeper than the budget allows even at the stiffest contact, under the load of
+            // Deeper than twice the budget even at the stiffest contact, under the load of
             // this step (not the remembered one, which an impact fills for several steps):
-            // a candidate, named once it is one two steps running.
+            // a candidate, named once it is one `OVERLOAD_SUSTAIN_STEPS` running.
             // A column face is judged once settled (`COLUMN_SETTLE_STEPS`), at the stiffer
             // contact it then gets and under its settled load: judged from its first steps, a
             // column of five 1 mm cubes at balanced was named at up to twice the depth it
