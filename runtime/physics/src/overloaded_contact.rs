@@ -4,12 +4,12 @@
 use crate::body_handle::BodyHandle;
 use crate::physics_preset::PhysicsPreset;
 
-/// A contact whose load would press it deeper than twice the penetration budget (`PhysicsSettings::max_penetration_fraction` of the smaller body's
-/// size) even at the stiffest contact the step allows (for a face in a column, the stiffer
-/// one it reaches once settled). In [`crate::StepOutput::overloaded_contacts`] the step
-/// it is first seen, once per pair, so a host can say so once: e.g. "body 3 carries 850
-/// times its contact's weight; it sinks about 4 mm (budget 2 mm); the `precise` preset
-/// holds it".
+/// A contact whose load would press it deeper than twice the penetration budget
+/// (`PhysicsSettings::max_penetration_fraction` of the smaller body's size) even at the
+/// stiffest contact the step allows (for a face in a column, the stiffer one it reaches once
+/// settled). In [`crate::StepOutput::overloaded_contacts`] the step it is first seen, once
+/// per pair, so a host can say so once: e.g. "body 3 carries 850 times its contact's
+/// weight; it sinks about 4 mm (budget 2 mm); the `precise` preset holds it".
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct OverloadedContact {
     /// First body of the pair.

@@ -62,8 +62,7 @@ impl PhysicsWorld {
     fn report_overloads(&mut self, overloads: &[Overload]) {
         let now = self.narrowphase.updates;
         for o in overloads {
-            let pi = o.pair;
-            let Some(pair) = self.narrowphase.pairs.get_mut(pi as usize) else {
+            let Some(pair) = self.narrowphase.pairs.get_mut(o.pair as usize) else {
                 continue;
             };
             pair.overloaded_steps = if pair.overloaded_at == Some(now.wrapping_sub(1)) {

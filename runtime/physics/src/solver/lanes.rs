@@ -60,8 +60,11 @@ impl V3 {
     /// `m` times the vector of each lane.
     #[inline(always)]
     pub fn transformed(self, m: &Mat3A) -> Self {
-        let col = |c: Vec3A| Self::splat(c);
-        let (cx, cy, cz) = (col(m.x_axis), col(m.y_axis), col(m.z_axis));
+        let (cx, cy, cz) = (
+            Self::splat(m.x_axis),
+            Self::splat(m.y_axis),
+            Self::splat(m.z_axis),
+        );
         Self {
             x: cx.x * self.x + cy.x * self.y + cz.x * self.z,
             y: cx.y * self.x + cy.y * self.y + cz.y * self.z,
