@@ -5,7 +5,7 @@
 //! went half its size deep. Issue 15's size class: columns of small cubes topple at every
 //! preset (see docs/physics-accuracy.md, *Where Onyx is behind*).
 //!
-//! `cargo run --release -p onyx-physics-bench --example small_stacks`
+//! `cargo run --release -p onyx-physics-bench --example small_stacks [-- SIZE COUNT]`
 
 use onyx_physics::glam::Vec3;
 use onyx_physics::PhysicsPreset;
@@ -48,6 +48,19 @@ fn column(engine: EngineKind, s: StepSettings, size: f32, count: usize) -> Optio
 }
 
 fn main() {
+    // `small_stacks SIZE COUNT`: that column only, in Onyx at each preset.
+    let args: Vec<f32> = std::env::args()
+        .skip(1)
+        .filter_map(|a| a.parse().ok())
+        .collect();
+    if let [size, count] = args[..] {
+        for preset in PhysicsPreset::ALL {
+            let s = StepSettings::of_preset(preset);
+            let r = column(EngineKind::Onyx, s, size, count as usize);
+            println!("{preset:<8} {size}×{count}: {r:?}");
+        }
+        return;
+    }
     for preset in PhysicsPreset::ALL {
         let s = StepSettings::of_preset(preset);
         for engine in [EngineKind::Onyx, EngineKind::Rapier] {

@@ -10,6 +10,7 @@
 //! in the order it fills: the sweep follows the constraints' order within a few places.
 
 use super::body_state::BodyState;
+use super::column_solve::ColumnSolve;
 use super::contact_batch::{
     ContactBatch, FaceBatch, Jitter, LaneResult, Levers, LinearFaceBatch, LinearPointBatch, Link,
     ManifoldRows, Pass, PointBatch,
@@ -75,6 +76,8 @@ pub(crate) struct ContactBatches {
     pub one_linear: Vec<LinearPointBatch>,
     /// Batches being filled, oldest first, per layout (see [`layout`]).
     open: [Vec<OpenBatch>; LAYOUTS],
+    /// The column faces among the batches, grouped by column (see [`ColumnSolve`]).
+    columns: ColumnSolve,
 }
 
 /// Packs the lanes of one batch at the end of `out`, preparing each manifold in `scratch`
@@ -154,6 +157,7 @@ impl ContactBatches {
             self.open[layout] = open;
             self.open[layout].clear();
         }
+        self.columns.build(&self.four, &self.four_linear);
     }
 
     fn emit(
@@ -210,7 +214,13 @@ impl ContactBatches {
 
     /// Whether some batch holds a column face (`ContactConstraint::column`).
     pub(crate) fn has_columns(&self) -> bool {
-        self.four.iter().any(|b| b.has_column()) || self.four_linear.iter().any(|b| b.has_column())
+        !self.columns.is_empty()
+    }
+
+    /// One coarse correction of the columns (see [`ColumnSolve::correct`]).
+    pub(crate) fn correct_columns(&mut self, states: &mut [BodyState], pass: Pass) {
+        self.columns
+            .correct(&mut self.four, &mut self.four_linear, states, pass);
     }
 
     /// One more pass over the batches that hold a column face (their other lanes too: a

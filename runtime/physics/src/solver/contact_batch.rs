@@ -24,6 +24,7 @@
 use glam::Vec3A;
 
 use super::body_state::BodyState;
+use super::column_solve::{ColumnFace, ColumnRows};
 use super::contact_constraint::PreparedManifold;
 use super::face_contact::FaceContact;
 use super::lanes::{
@@ -216,9 +217,10 @@ pub fn column_face(carried: f32, hertz: f32, h: f32) -> bool {
 
 /// Steps running a face must have been a column face before it may stiffen past the step's
 /// cap, up to `Softness::max_column_hertz`. Bounded `[1, ∞)`: stiffened from its first
-/// step (0), ten 3 mm cubes at 60 Hz × 4 fell while they settled (the flags of a settling
-/// column come and go); from 2 to 30 they stand 10 % deep instead of 18 %.
-pub const COLUMN_SETTLE_STEPS: u16 = 10;
+/// step (0), ten 1 mm cubes at 60 Hz × 4 fell while they settled (the flags of a settling
+/// column come and go); at 1 and 3 they settle within their 2 % budget; at 10 and 30 they
+/// fell, telescoped into each other at the step's cap before their faces stiffened.
+pub const COLUMN_SETTLE_STEPS: u16 = 3;
 
 /// A column face is resting while each point closes or parts slower than its depth budget in
 /// a step, or, where that is slower, than its budget in a period of the face's own
@@ -695,11 +697,17 @@ impl<const N: usize, M: ManifoldRows, L: Levers<N>> ContactBatch<N, M, L> {
         self.column != 0
     }
 
-    /// One Gauss–Seidel pass: the normal rows (shared step, then point by point), then
-    /// friction at the manifold centre bounded by the new normal impulses.
-    pub(crate) fn solve(&mut self, states: &mut [BodyState], pass: Pass) {
-        let mut a = Self::gather(states, &self.body_a);
-        let mut b = Self::gather(states, &self.body_b);
+    /// The normal rows of one pass from the bodies' current state: each point's normal
+    /// velocity, its row (speculative or soft, and its bias) and the row's mass and impulse
+    /// scales.
+    #[inline(always)]
+    fn normal_rows(
+        &self,
+        states: &[BodyState],
+        a: &Velocities,
+        b: &Velocities,
+        pass: Pass,
+    ) -> ([F; N], NormalRows<N>, [F; N], [F; N]) {
         let ((dp_a, dtheta_a), (dp_b, dtheta_b)) = if L::ANGULAR {
             (
                 gather_deltas(states, &self.body_a),
@@ -757,6 +765,17 @@ impl<const N: usize, M: ManifoldRows, L: Levers<N>> ContactBatch<N, M, L> {
                 rows.bias[k] = speculative.select(sep * inv_h, zero);
             }
         }
+        (vn, rows, mass_scale, impulse_scale)
+    }
+
+    /// One Gauss–Seidel pass: the normal rows (shared step, then point by point), then
+    /// friction at the manifold centre bounded by the new normal impulses.
+    pub(crate) fn solve(&mut self, states: &mut [BodyState], pass: Pass) {
+        let mut a = Self::gather(states, &self.body_a);
+        let mut b = Self::gather(states, &self.body_b);
+        let n = self.normal;
+        let zero = F::ZERO;
+        let (mut vn, rows, mass_scale, impulse_scale) = self.normal_rows(states, &a, &b, pass);
         let mut applied = [zero; N];
         self.manifold
             .solve_shared(&mut self.points, &rows, &mut vn, &mut applied);
@@ -963,6 +982,101 @@ impl<const N: usize, M: ManifoldRows, L: Levers<N>> ContactBatch<N, M, L> {
         }
         let c = change.to_array();
         c[0].max(c[1]).max(c[2].max(c[3]))
+    }
+}
+
+/// What the columns' coarse correction ([`super::column_solve`]) reads and writes of a batch
+/// of faces.
+impl<L: Levers<4>> ContactBatch<4, FaceContact, L> {
+    /// Lane `l`'s face as the coarse correction sees it, or `None` where the lane is not a
+    /// column face.
+    pub(crate) fn column_face(&self, l: usize) -> Option<ColumnFace> {
+        if (self.column >> l) & 1 == 0 {
+            return None;
+        }
+        let lane = |v: &V3| v.to_lanes()[l];
+        let active: [bool; 4] =
+            std::array::from_fn(|k| self.manifold.active(k).to_array()[l] > 0.0);
+        let zero = [Vec3A::ZERO; 4];
+        let (rn, irn) = match self.levers.rows() {
+            Some(rows) => (
+                [
+                    rows.points.map(|p| lane(&p.rn_a)),
+                    rows.points.map(|p| lane(&p.rn_b)),
+                ],
+                [
+                    rows.points.map(|p| lane(&p.irn_a)),
+                    rows.points.map(|p| lane(&p.irn_b)),
+                ],
+            ),
+            None => ([zero; 2], [zero; 2]),
+        };
+        Some(ColumnFace::new(
+            [self.body_a[l], self.body_b[l]],
+            [(self.writes_a >> l) & 1 != 0, (self.writes_b >> l) & 1 != 0],
+            lane(&self.normal),
+            [lane(&self.tangent[0]), lane(&self.tangent[1])],
+            [lane(&self.inv_mass_a), lane(&self.inv_mass_b)],
+            active,
+            rn,
+            irn,
+        ))
+    }
+
+    /// The face's normal rows in `pass` as the coarse correction reads them (see
+    /// [`ColumnRows`]).
+    pub(crate) fn column_rows(&self, states: &[BodyState], pass: Pass) -> ColumnRows {
+        let a = Self::gather(states, &self.body_a);
+        let b = Self::gather(states, &self.body_b);
+        let (vn, rows, mass_scale, impulse_scale) = self.normal_rows(states, &a, &b, pass);
+        let leveled = self.manifold.level_patch(&self.points, &rows);
+        let share = leveled.lanes.select(leveled.share, F::ZERO);
+        let mut out = ColumnRows {
+            residual: [F::ZERO; 4],
+            compliance: [F::ZERO; 4],
+            level_share: share,
+        };
+        for k in 0..4 {
+            let cp = &self.points[k];
+            let own = cp.normal_impulse;
+            let leak = own + share * (leveled.mean_impulse - own);
+            // The row's fixed point, `m·s·(vn + bias) + i·leak = 0`, over `m·s`.
+            let compliance = impulse_scale[k] / (mass_scale[k] * cp.normal_mass);
+            let active = self.manifold.active(k).simd_gt(F::ZERO);
+            let compliance = active.select(compliance, F::ZERO);
+            out.residual[k] = active.select(vn[k] + rows.bias[k] + compliance * leak, F::ZERO);
+            out.compliance[k] = compliance;
+        }
+        out
+    }
+
+    /// Adds `impulse[k]` to point `k`'s normal impulse per lane (0 on lanes that are not
+    /// column faces), none below zero, and moves the bodies by what was added.
+    pub(crate) fn add_column_impulses(&mut self, states: &mut [BodyState], impulse: [F; 4]) {
+        let mut a = Self::gather(states, &self.body_a);
+        let mut b = Self::gather(states, &self.body_b);
+        let mut sum = F::ZERO;
+        let (mut da, mut db) = (V3::ZERO, V3::ZERO);
+        for (k, cp) in self.points.iter_mut().enumerate() {
+            let new = fmax(F::ZERO, cp.normal_impulse + impulse[k]);
+            let mine = new - cp.normal_impulse;
+            cp.normal_impulse = new;
+            cp.max_normal_impulse = fmax(cp.max_normal_impulse, mine);
+            sum += mine;
+            if let Some(rows) = self.levers.rows() {
+                da += rows.points[k].irn_a.scale(mine);
+                db += rows.points[k].irn_b.scale(mine);
+            }
+        }
+        let p = self.normal.scale(sum);
+        a.v -= self.inv_mass_a * p;
+        b.v += self.inv_mass_b * p;
+        if L::ANGULAR {
+            a.w -= da;
+            b.w += db;
+        }
+        Self::scatter(states, &self.body_a, self.writes_a, a);
+        Self::scatter(states, &self.body_b, self.writes_b, b);
     }
 }
 

@@ -39,6 +39,65 @@ pub(crate) struct FaceContact {
     in_b: V3,
 }
 
+impl FaceContact {
+    /// Per lane, the mean over the patch's points of their rows' residuals (soft:
+    /// `vn + bias + impulse_scale·λ / (mass_scale·m)`; speculative: `vn + s/h`), and how much
+    /// the compliance of the soft rows moves that mean per unit of total impulse shared
+    /// equally among the points (`Σ compliance / count²`).
+    #[inline(always)]
+    pub(crate) fn patch_residual<const N: usize>(
+        &self,
+        points: &[PointLanes; N],
+        rows: &NormalRows<N>,
+        vn: &[F; N],
+    ) -> (F, F) {
+        let (mut residual, mut total_compliance) = (F::ZERO, F::ZERO);
+        for k in 0..N {
+            // The row each point has in the per-point pass: speculative (rigid) or soft,
+            // whose compliance is `impulse_scale / (mass_scale · m)` beyond the mechanical part.
+            let compliance = if rows.use_bias {
+                rows.speculative[k].select(F::ZERO, self.soft_compliance * self.inv_normal_mass[k])
+            } else {
+                F::ZERO
+            };
+            residual +=
+                self.active[k] * (vn[k] + rows.bias[k] + compliance * points[k].normal_impulse);
+            total_compliance += compliance;
+        }
+        let inv = self.inv_count;
+        (residual * inv, total_compliance * inv * inv)
+    }
+
+    /// Adds `total` normal impulse per lane to the patch, shared equally among its points but
+    /// no point's accumulated impulse below zero; returns what each point got.
+    #[inline(always)]
+    pub(crate) fn share_impulse<const N: usize>(
+        &self,
+        points: &mut [PointLanes; N],
+        total: F,
+    ) -> F {
+        let mut min_impulse = F::splat(f32::MAX);
+        for (k, cp) in points.iter().enumerate() {
+            let active = self.active[k].simd_gt(F::ZERO);
+            min_impulse = active.select(cp.normal_impulse.fast_min(min_impulse), min_impulse);
+        }
+        let total = fmax(-self.count * min_impulse, total);
+        let each = total * self.inv_count;
+        for (k, cp) in points.iter_mut().enumerate() {
+            let mine = each * self.active[k];
+            cp.normal_impulse += mine;
+            cp.max_normal_impulse = fmax(cp.max_normal_impulse, mine);
+        }
+        each
+    }
+
+    /// 1 where lane `l`'s manifold has point `k`, else 0.
+    #[inline(always)]
+    pub(crate) fn active(&self, k: usize) -> F {
+        self.active[k]
+    }
+}
+
 impl ManifoldRows for FaceContact {
     const EMPTY: Self = Self {
         soft_compliance: F::ZERO,
@@ -142,35 +201,14 @@ impl ManifoldRows for FaceContact {
         if !self.patch.any() {
             return;
         }
-        let (mut residual, mut total_compliance) = (F::ZERO, F::ZERO);
-        let mut min_impulse = F::splat(f32::MAX);
-        for k in 0..N {
-            let cp = &points[k];
-            // The row each point has in the per-point pass: speculative (rigid) or soft,
-            // whose compliance is `impulse_scale / (mass_scale · m)` beyond the mechanical part.
-            let compliance = if rows.use_bias {
-                rows.speculative[k].select(F::ZERO, self.soft_compliance * self.inv_normal_mass[k])
-            } else {
-                F::ZERO
-            };
-            let active = self.active[k].simd_gt(F::ZERO);
-            residual += self.active[k] * (vn[k] + rows.bias[k] + compliance * cp.normal_impulse);
-            total_compliance += compliance;
-            min_impulse = active.select(cp.normal_impulse.fast_min(min_impulse), min_impulse);
-        }
-        let inv = self.inv_count;
+        let (residual, compliance) = self.patch_residual(points, rows, vn);
         // The mean residual moves by `k` per unit of total impulse shared equally.
-        let k = self.patch_k + total_compliance * inv * inv;
-        // No point's accumulated impulse may go below zero.
-        let total = fmax(-self.count * min_impulse, -(residual * inv) / k);
-        let each = self.patch.select(total * inv, F::ZERO);
+        let k = self.patch_k + compliance;
+        let total = self.patch.select(-residual / k, F::ZERO);
+        let each = self.share_impulse(points, total);
         for k in 0..N {
-            let cp = &mut points[k];
-            let mine = each * self.active[k];
-            cp.normal_impulse += mine;
-            cp.max_normal_impulse = fmax(cp.max_normal_impulse, mine);
-            applied[k] += mine;
-            vn[k] += mine * self.row_sum[k];
+            applied[k] += each * self.active[k];
+            vn[k] += each * self.active[k] * self.row_sum[k];
         }
     }
 
