@@ -363,8 +363,8 @@ fn a_column_placed_face_to_face_leaves_its_first_step_without_turning() {
 }
 
 /// Columns of two to ten equal cubes from 1 mm to 10 m, placed touching, stay up at balanced
-/// and precise for 10 s (the top cube less than a fifth of its size aside) and settle within
-/// the 5 % budget. Their faces, stiffened for the depth budget, are soft in tilt, and in
+/// and precise for 10 s (the top cube less than a fifth of its size aside) and sink no
+/// deeper than 5 % of a cube from placement on. Their faces, stiffened for the depth budget, are soft in tilt, and in
 /// series under the load above them the columns buckled (see `contact_batch::column_face`);
 /// levelled, they are stiff in tilt, and a chain of stiff faces is what Gauss–Seidel
 /// converges slowest: the columns stand since each column is also solved as a whole
@@ -387,9 +387,12 @@ fn columns_of_cubes_from_1_mm_to_10_m_settle_within_5_percent_at_balanced_and_pr
 /// passes took settled faces' stiffness into account, five 3 cm cubes fell after 3.4 s and
 /// ten 10 cm ones after 6.9 s; before each column was solved as a whole, five and ten 1 cm
 /// ones fell). Five 1 mm and 3 mm cubes still fall at fast (see the overload test below).
+/// Measured from placement, two 3 cm cubes dip 6.4 % of a cube in their first steps (fast's
+/// step caps its faces at 45 Hz until they settle): within 7 %, not the 5 % that balanced and
+/// precise hold from the first step.
 #[test]
 fn columns_of_cubes_from_1_cm_stay_up_at_fast() {
-    assert_columns_stay_up(&[PhysicsPreset::Fast], &[0.01, 0.03, 0.1, 1.0, 10.0], 0.05);
+    assert_columns_stay_up(&[PhysicsPreset::Fast], &[0.01, 0.03, 0.1, 1.0, 10.0], 0.07);
 }
 
 const BALANCED_AND_PRECISE: &[PhysicsPreset] = &[PhysicsPreset::Balanced, PhysicsPreset::Precise];
@@ -439,24 +442,164 @@ fn column_world(preset: PhysicsPreset, size: f32, count: usize) -> (PhysicsWorld
 }
 
 /// A column of `count` cubes of `size` on a friction 0.6 ground, placed touching, run for
-/// 10 s: how far the top cube ends aside and the deepest contact over the last 5 s, m.
+/// 10 s: how far the top cube ends aside and the deepest contact from placement on, m.
 fn column_of_cubes(preset: PhysicsPreset, size: f32, count: usize) -> (f32, f32) {
     let (mut w, cubes) = column_world(preset, size, count);
     let steps = (10.0 / w.settings().dt) as usize;
     let mut deepest = 0.0f32;
-    for k in 0..steps {
+    for _ in 0..steps {
         w.step();
-        if k >= steps / 2 {
-            let y = |i: usize| w.body(cubes[i]).unwrap().translation().y;
-            let mut pen = 0.5 * size - y(0);
-            for i in 1..count {
-                pen = pen.max(size - (y(i) - y(i - 1)));
-            }
-            deepest = deepest.max(pen);
+        let y = |i: usize| w.body(cubes[i]).unwrap().translation().y;
+        let mut pen = 0.5 * size - y(0);
+        for i in 1..count {
+            pen = pen.max(size - (y(i) - y(i - 1)));
         }
+        deepest = deepest.max(pen);
     }
     let top = w.body(cubes[count - 1]).unwrap().translation();
     (Vec3::new(top.x, 0.0, top.z).length(), deepest)
+}
+
+/// One box of a column: half extents, where it sits aside of the column's axis, and its
+/// turn about the vertical.
+struct Level {
+    half: Vec3,
+    aside: Vec3,
+    yaw: f32,
+}
+
+impl Level {
+    fn cube(size: f32) -> Self {
+        Self::block(Vec3::splat(size))
+    }
+
+    fn block(size: Vec3) -> Self {
+        Self {
+            half: 0.5 * size,
+            aside: Vec3::ZERO,
+            yaw: 0.0,
+        }
+    }
+}
+
+/// Boxes stacked touching, bottom first, on a ground half-space, all at `friction`, run for
+/// 10 s at `preset` from placement: the deepest contact over the whole run as a share of the
+/// smaller box's smallest dimension, and how far the top box ends from where it was placed
+/// as a share of its largest.
+fn column_of_levels(preset: PhysicsPreset, friction: f32, levels: &[Level]) -> (f32, f32) {
+    let mut w = PhysicsWorld::new(preset.settings());
+    let ground = w.insert_body(RigidBodyDesc::fixed());
+    w.insert_collider(ColliderDesc::half_space(Vec3::Y).friction(friction), ground);
+    let mut y = 0.0;
+    let mut below = 0.0;
+    let boxes: Vec<(BodyHandle, Vec3)> = levels
+        .iter()
+        .map(|l| {
+            y += below + l.half.y;
+            below = l.half.y;
+            let at = Vec3::new(l.aside.x, y, l.aside.z);
+            let b = w.insert_body(
+                RigidBodyDesc::dynamic()
+                    .translation(at)
+                    .rotation(onyx_physics::glam::Quat::from_rotation_y(l.yaw))
+                    .can_sleep(false),
+            );
+            w.insert_collider(
+                ColliderDesc::cuboid(l.half.x, l.half.y, l.half.z).friction(friction),
+                b,
+            );
+            (b, at)
+        })
+        .collect();
+    let smallest = |i: usize| 2.0 * levels[i].half.min_element();
+    let mut deepest = 0.0f32;
+    for _ in 0..(10.0 / w.settings().dt) as usize {
+        w.step();
+        let y = |i: usize| w.body(boxes[i].0).unwrap().translation().y;
+        deepest = deepest.max((levels[0].half.y - y(0)) / smallest(0));
+        for i in 1..levels.len() {
+            let gap = y(i) - y(i - 1) - levels[i].half.y - levels[i - 1].half.y;
+            deepest = deepest.max(-gap / smallest(i).min(smallest(i - 1)));
+        }
+    }
+    let (top, placed) = *boxes.last().unwrap();
+    let moved = w.body(top).unwrap().translation() - placed;
+    let size = 2.0 * levels.last().unwrap().half.max_element();
+    (deepest, Vec3::new(moved.x, 0.0, moved.z).length() / size)
+}
+
+/// Columns of millimetre boxes as a user builds them, not only equal cubes on one axis:
+/// each level a tenth of a cube aside of the one below, every other cube turned 45°, 5:1
+/// bricks, ten 1 mm cubes on a 1 cm box, 3-2-1 mm cubes, frictionless cubes. At balanced
+/// and precise none sinks past 5 % of the smaller box from the first step on
+/// (`solve_stage::NEW_FACE_STEPS`: before a new face carried the column on it from its
+/// first step, five 1 mm cubes telescoped 56 % of a cube into each other in it, and the
+/// offset, turned and brick columns fell), and the top box stays within a tenth of its size.
+#[test]
+fn columns_of_millimetre_boxes_hold_from_placement_offset_turned_and_mixed() {
+    let mm = 0.001;
+    let cubes = |n: usize, size: f32| (0..n).map(move |_| Level::cube(size));
+    let columns: Vec<(&str, f32, Vec<Level>)> = vec![
+        (
+            "five 1 mm cubes, each 0.1 mm aside of the one below",
+            0.6,
+            (0..5)
+                .map(|i| Level {
+                    aside: Vec3::X * 0.1 * mm * i as f32,
+                    ..Level::cube(mm)
+                })
+                .collect(),
+        ),
+        (
+            "ten 1 mm cubes, every other one turned 45°",
+            0.6,
+            (0..10)
+                .map(|i| Level {
+                    yaw: if i % 2 == 1 {
+                        std::f32::consts::FRAC_PI_4
+                    } else {
+                        0.0
+                    },
+                    ..Level::cube(mm)
+                })
+                .collect(),
+        ),
+        (
+            "ten 5 x 1 x 1 mm bricks",
+            0.6,
+            (0..10)
+                .map(|_| Level::block(Vec3::new(5.0 * mm, mm, mm)))
+                .collect(),
+        ),
+        (
+            "ten 1 mm cubes on a 1 cm cube",
+            0.6,
+            std::iter::once(Level::cube(10.0 * mm))
+                .chain(cubes(10, mm))
+                .collect(),
+        ),
+        (
+            "3, 2 and 1 mm cubes",
+            0.6,
+            [3.0, 2.0, 1.0].map(|s| Level::cube(s * mm)).into(),
+        ),
+        ("ten frictionless 1 mm cubes", 0.0, cubes(10, mm).collect()),
+        ("ten 2 mm cubes", 0.6, cubes(10, 2.0 * mm).collect()),
+    ];
+    let mut failures = Vec::new();
+    for &preset in BALANCED_AND_PRECISE {
+        for (name, friction, levels) in &columns {
+            let (deepest, moved) = column_of_levels(preset, *friction, levels);
+            if !(deepest <= 0.05 && moved <= 0.1) {
+                failures.push(format!(
+                    "{preset} {name}: deepest {:.1} %, top moved {:.1} % of its size",
+                    100.0 * deepest,
+                    100.0 * moved
+                ));
+            }
+        }
+    }
+    assert!(failures.is_empty(), "{failures:#?}");
 }
 
 /// A column a preset cannot hold is named in `overloaded_contacts` with a preset that

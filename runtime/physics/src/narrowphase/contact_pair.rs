@@ -61,9 +61,13 @@ pub struct ContactPair {
     /// decaying with half-life `solver::softness::LOAD_MEMORY_HALF_LIFE`: the load its
     /// contact stiffens for (a bounce that unloads it for a step keeps it stiff).
     pub(crate) load_memory: f32,
+    /// Steps the pair has been solved (saturating): a face younger than
+    /// `pipeline::solve_stage::NEW_FACE_STEPS` carries at least the column on it.
+    pub(crate) solved_steps: u16,
     /// Steps running that the pair's contact was a column face (`ContactConstraint::column`;
     /// 0 when it was not last step): a column face settled for
-    /// `solver::contact_batch::COLUMN_SETTLE_STEPS` may stiffen past the step's cap.
+    /// `solver::contact_batch::COLUMN_SETTLE_STEPS`, or one since its first step, may
+    /// stiffen past the step's cap.
     pub(crate) column_steps: u16,
 }
 

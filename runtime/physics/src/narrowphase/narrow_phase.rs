@@ -157,6 +157,7 @@ impl NarrowPhase {
             overloaded_at: None,
             overloaded_steps: 0,
             load_memory: 0.0,
+            solved_steps: 0,
             column_steps: 0,
         });
         true

@@ -1,10 +1,12 @@
 //! How many faces each solver body rests on: what tells a column (each body on one face)
-//! from a pyramid (bricks on two). Counted only when some face first asks, once a step.
+//! from a pyramid (bricks on two), and the mass a body carries down a column. Counted only
+//! when some face first asks, once a step.
 
 use glam::Vec3;
 
 use super::heavy_on_light::upper_lower;
 use crate::narrowphase::contact_pair::ContactPair;
+use crate::solver::body_state::BodyState;
 use crate::solver::contact_constraint::{touching_distance, ManifoldRef};
 
 /// A face supports the body above it when its normal is within this cosine of the vertical
@@ -19,13 +21,67 @@ pub const SUPPORT_MIN_COS: f32 = std::f32::consts::FRAC_1_SQRT_2;
 #[derive(Debug, Default)]
 pub(crate) struct ColumnSupports {
     counts: Vec<u8>,
+    /// Per solver body, the lower body of the last support face counted for it (its only
+    /// one where `counts` is 1).
+    below: Vec<u32>,
     counted: bool,
+    /// Per solver body, its mass and the masses of the bodies resting on it through one face
+    /// each, up the column (see [`Self::column_mass`]); empty until first asked.
+    column_masses: Vec<f32>,
 }
+
+/// Longest column [`ColumnSupports::column_mass`] walks down from a body: the bound of its
+/// cost, far past any column one face can carry within its budget.
+pub const MAX_COLUMN_WALK: usize = 256;
 
 impl ColumnSupports {
     /// Forgets last step's counts (they are counted again when first asked).
     pub fn reset(&mut self) {
         self.counted = false;
+        self.column_masses.clear();
+    }
+
+    /// The mass solver body `body` holds up: its own (`mass_of`) and that of every body
+    /// resting on it through one face each, and on those, up the column (a pyramid's brick
+    /// rests on two and adds to neither). The load a new face carries from its first step,
+    /// before its warm-started impulse has grown to it.
+    pub fn column_mass(
+        &mut self,
+        body: u32,
+        manifolds: &[ManifoldRef],
+        pairs: &[ContactPair],
+        gravity: Vec3,
+        states: &[BodyState],
+        mass_of: impl Fn(&BodyState) -> f32,
+    ) -> f32 {
+        if !self.counted {
+            self.count(manifolds, pairs, gravity);
+        }
+        if self.column_masses.is_empty() {
+            self.column_masses.extend(states.iter().map(&mass_of));
+            for top in 0..self.counts.len().min(states.len()) {
+                if self.counts[top] != 1 {
+                    continue;
+                }
+                let mass = mass_of(&states[top]);
+                let mut at = top;
+                for _ in 0..MAX_COLUMN_WALK {
+                    let down = self.below[at] as usize;
+                    if down == 0 || down >= states.len() {
+                        break;
+                    }
+                    self.column_masses[down] += mass;
+                    if self.counts.get(down) != Some(&1) {
+                        break;
+                    }
+                    at = down;
+                }
+            }
+        }
+        self.column_masses
+            .get(body as usize)
+            .copied()
+            .unwrap_or(0.0)
     }
 
     /// Whether solver body `body` rests on one face at most (the static body, index 0,
@@ -49,6 +105,7 @@ impl ColumnSupports {
     fn count(&mut self, manifolds: &[ManifoldRef], pairs: &[ContactPair], gravity: Vec3) {
         self.counted = true;
         self.counts.clear();
+        self.below.clear();
         let up = -gravity.normalize_or_zero();
         for r in manifolds {
             let Some(pair) = pairs.get(r.pair as usize) else {
@@ -62,12 +119,14 @@ impl ColumnSupports {
                 && m.normal.dot(up).abs() > SUPPORT_MIN_COS
                 && m.points.iter().any(|p| p.separation <= touching)
             {
-                let (upper, _) = upper_lower(gravity, m.normal, r.body_a, r.body_b);
+                let (upper, lower) = upper_lower(gravity, m.normal, r.body_a, r.body_b);
                 let upper = upper as usize;
                 if self.counts.len() <= upper {
                     self.counts.resize(upper + 1, 0);
+                    self.below.resize(upper + 1, 0);
                 }
                 self.counts[upper] = self.counts[upper].saturating_add(1);
+                self.below[upper] = lower;
             }
         }
     }

@@ -216,10 +216,12 @@ pub fn column_face(carried: f32, hertz: f32, h: f32) -> bool {
 }
 
 /// Steps running a face must have been a column face before it may stiffen past the step's
-/// cap, up to `Softness::max_column_hertz`. Bounded `[1, ∞)`: stiffened from its first
-/// step (0), ten 1 mm cubes at 60 Hz × 4 fell while they settled (the flags of a settling
-/// column come and go); at 1 and 3 they settle within their 2 % budget; at 10 and 30 they
-/// fell, telescoped into each other at the step's cap before their faces stiffened.
+/// cap, up to `Softness::max_column_hertz`, unless it has been one since it first touched
+/// (a column placed at rest, whose new faces carry the column from their first step:
+/// `pipeline::solve_stage::NEW_FACE_STEPS`). Bounded `[1, ∞)`: a face that becomes a column
+/// in a pile stiffened at once (0), one start of five of the pile of 20 ragdolls at
+/// 60 Hz × 4 exploded to 3837 J/kg (`examples/spread.rs` in the physics bench); at 3 all
+/// five rest.
 pub const COLUMN_SETTLE_STEPS: u16 = 3;
 
 /// A column face is resting while each point closes or parts slower than its depth budget in
