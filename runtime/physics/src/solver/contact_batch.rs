@@ -1037,6 +1037,7 @@ impl<L: Levers<4>> ContactBatch<4, FaceContact, L> {
             residual: [F::ZERO; 4],
             compliance: [F::ZERO; 4],
             level_share: share,
+            impulse: [F::ZERO; 4],
         };
         for k in 0..4 {
             let cp = &self.points[k];
@@ -1048,6 +1049,7 @@ impl<L: Levers<4>> ContactBatch<4, FaceContact, L> {
             let compliance = active.select(compliance, F::ZERO);
             out.residual[k] = active.select(vn[k] + rows.bias[k] + compliance * leak, F::ZERO);
             out.compliance[k] = compliance;
+            out.impulse[k] = own;
         }
         out
     }
