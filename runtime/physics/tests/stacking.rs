@@ -43,23 +43,33 @@ fn ten_box_stack_rests_1000_steps_with_top_drift_below_1cm() {
     );
 }
 
-#[test]
-fn twenty_row_pyramid_of_210_boxes_stands_1000_steps() {
-    let (mut w, _) = world_with_ground(0.6);
-    w.settings_mut().sleep_enabled = false;
+/// 210 unit boxes (half-size 0.5 m, friction 0.6) in 20 rows 2 % apart, on the ground at
+/// y = 0: each with where it was placed.
+fn twenty_row_pyramid(w: &mut PhysicsWorld) -> Vec<(BodyHandle, Vec3)> {
     let h = 0.5;
     let rows = 20;
     let mut boxes = Vec::new();
     for row in 0..rows {
         let n = rows - row;
         for i in 0..n {
-            let x = (i as f32 - (n - 1) as f32 * 0.5) * 2.0 * h * 1.02;
-            let y = h + row as f32 * 2.0 * h;
-            let b = w.insert_body(RigidBodyDesc::dynamic().translation(Vec3::new(x, y, 0.0)));
+            let at = Vec3::new(
+                (i as f32 - (n - 1) as f32 * 0.5) * 2.0 * h * 1.02,
+                h + row as f32 * 2.0 * h,
+                0.0,
+            );
+            let b = w.insert_body(RigidBodyDesc::dynamic().translation(at));
             w.insert_collider(ColliderDesc::cuboid(h, h, h).friction(0.6), b);
-            boxes.push((b, Vec3::new(x, y, 0.0)));
+            boxes.push((b, at));
         }
     }
+    boxes
+}
+
+#[test]
+fn twenty_row_pyramid_of_210_boxes_stands_1000_steps() {
+    let (mut w, _) = world_with_ground(0.6);
+    w.settings_mut().sleep_enabled = false;
+    let boxes = twenty_row_pyramid(&mut w);
     assert_eq!(boxes.len(), 210);
     run(&mut w, 1000);
     let mut worst = 0.0f32;
@@ -94,34 +104,23 @@ fn a_twenty_row_pyramid_collapsing_at_30_hz_x_1_creates_no_energy() {
     let ground = w.insert_body(RigidBodyDesc::fixed().translation(Vec3::new(0.0, -0.5, 0.0)));
     w.insert_collider(ColliderDesc::cuboid(25.0, 0.5, 25.0).friction(0.6), ground);
     let h = 0.5;
-    let rows = 20;
-    let mut boxes = Vec::new();
-    for row in 0..rows {
-        let n = rows - row;
-        for i in 0..n {
-            let x = (i as f32 - (n - 1) as f32 * 0.5) * 2.0 * h * 1.02;
-            let y = h + row as f32 * 2.0 * h;
-            let b = w.insert_body(RigidBodyDesc::dynamic().translation(Vec3::new(x, y, 0.0)));
-            w.insert_collider(ColliderDesc::cuboid(h, h, h).friction(0.6), b);
-            boxes.push((b, y));
-        }
-    }
+    let boxes = twenty_row_pyramid(&mut w);
     let g = 9.81f32;
     // Energy above the start: kinetic (translation) plus potential, J; what falling flat
     // releases bounds it.
     let gain = |w: &PhysicsWorld| -> f32 {
         boxes
             .iter()
-            .map(|&(b, y0)| {
+            .map(|&(b, at)| {
                 let body = w.body(b).unwrap();
                 let m = body.mass();
-                0.5 * m * body.linvel().length_squared() + m * g * (body.translation().y - y0)
+                0.5 * m * body.linvel().length_squared() + m * g * (body.translation().y - at.y)
             })
             .sum()
     };
     let releasable: f32 = boxes
         .iter()
-        .map(|&(b, y0)| w.body(b).unwrap().mass() * g * (y0 - h))
+        .map(|&(b, at)| w.body(b).unwrap().mass() * g * (at.y - h))
         .sum();
     let mut worst = f32::MIN;
     for _ in 0..1000 {
