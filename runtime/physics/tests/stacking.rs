@@ -589,11 +589,14 @@ fn column_of_levels(preset: PhysicsPreset, friction: f32, levels: &[Level]) -> (
 
 /// Columns of millimetre boxes as a user builds them, not only equal cubes on one axis:
 /// each level a tenth of a cube aside of the one below, every other cube turned 45°, 5:1
-/// bricks, ten 1 mm cubes on a 1 cm box, 3-2-1 mm cubes, frictionless cubes. At balanced
+/// bricks, ten 1 mm cubes on a 1 cm, a 10 cm and a 10 m box, 3-2-1 mm cubes, frictionless
+/// cubes. At balanced
 /// and precise none sinks past 5 % of the smaller box from the first step on
 /// (`solve_stage::NEW_FACE_STEPS`: before a new face carried the column on it from its
 /// first step, five 1 mm cubes telescoped 56 % of a cube into each other in it, and the
-/// offset, turned and brick columns fell), and the top box stays within a tenth of its size.
+/// offset, turned and brick columns fell; before a face within the rounding of its
+/// coordinates was touching, `contact_constraint::TOUCHING_ROUNDING`, the cubes on the 10 cm
+/// and 10 m boxes sank 198 % at balanced), and the top box stays within a tenth of its size.
 #[test]
 fn columns_of_millimetre_boxes_hold_from_placement_offset_turned_and_mixed() {
     let mm = 0.001;
@@ -634,6 +637,20 @@ fn columns_of_millimetre_boxes_hold_from_placement_offset_turned_and_mixed() {
             "ten 1 mm cubes on a 1 cm cube",
             0.6,
             std::iter::once(Level::cube(10.0 * mm))
+                .chain(cubes(10, mm))
+                .collect(),
+        ),
+        (
+            "ten 1 mm cubes on a 10 cm cube",
+            0.6,
+            std::iter::once(Level::cube(100.0 * mm))
+                .chain(cubes(10, mm))
+                .collect(),
+        ),
+        (
+            "ten 1 mm cubes on a 10 m cube",
+            0.6,
+            std::iter::once(Level::cube(10_000.0 * mm))
                 .chain(cubes(10, mm))
                 .collect(),
         ),

@@ -49,6 +49,10 @@ pub struct ContactPair {
     /// Smallest dimension of the smaller collider, metres (`f32::MAX` when neither is
     /// finite): the scale of the penetration the pair's contact may settle at.
     pub(crate) size: f32,
+    /// The larger absolute world coordinate of the two bodies at the last update, m: the
+    /// scale of the rounding of their separation (`solver::contact_constraint::
+    /// touching_distance`).
+    pub(crate) reach: f32,
     /// The pair was named in `StepOutput::overloaded_contacts` (once per pair).
     pub(crate) overload_reported: bool,
     /// The step (`NarrowPhase::updates`) its own load last overloaded it, and how many

@@ -153,6 +153,7 @@ impl NarrowPhase {
             generated_at: None,
             ball_ball: false,
             size,
+            reach: 0.0,
             overload_reported: false,
             overloaded_at: None,
             overloaded_steps: 0,
@@ -326,6 +327,11 @@ impl NarrowPhase {
             let d_ab = bb.translation - ba.translation;
             let inv_a = rot_a.inverse();
             let pair = &mut self.pairs[i];
+            pair.reach = ba
+                .translation
+                .abs()
+                .max_element()
+                .max(bb.translation.abs().max_element());
             // Two balls are regenerated every step, in place: their normal is the line of
             // centres, which a kept normal would not follow (a pile of spheres sank 3.3 cm
             // instead of 2.4), and their one point costs less than the reuse bookkeeping.

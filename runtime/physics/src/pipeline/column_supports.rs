@@ -114,7 +114,7 @@ impl ColumnSupports {
             let Some(m) = pair.manifolds.get(r.manifold as usize) else {
                 continue;
             };
-            let touching = touching_distance(pair.size);
+            let touching = touching_distance(pair.size, pair.reach);
             if r.count > 1
                 && m.normal.dot(up).abs() > SUPPORT_MIN_COS
                 && m.points.iter().any(|p| p.separation <= touching)

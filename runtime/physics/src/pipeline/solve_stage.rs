@@ -375,7 +375,7 @@ impl PhysicsWorld {
                 load_level_share: 0.0,
                 mass_scale: support_mass_scale(pair, r, states, &s),
                 softness: Softness::RIGID,
-                touching: touching_distance(pair.size),
+                touching: touching_distance(pair.size, pair.reach),
                 count: r.count,
                 friction: FrictionPart::default(),
                 block: NormalBlock::default(),
