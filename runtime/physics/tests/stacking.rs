@@ -601,6 +601,11 @@ fn column_of_levels(preset: PhysicsPreset, friction: f32, levels: &[Level]) -> (
 fn columns_of_millimetre_boxes_hold_from_placement_offset_turned_and_mixed() {
     let mm = 0.001;
     let cubes = |n: usize, size: f32| (0..n).map(move |_| Level::cube(size));
+    let ten_mm_cubes_on = |base: f32| -> Vec<Level> {
+        std::iter::once(Level::cube(base))
+            .chain(cubes(10, mm))
+            .collect()
+    };
     let columns: Vec<(&str, f32, Vec<Level>)> = vec![
         (
             "five 1 mm cubes, each 0.1 mm aside of the one below",
@@ -636,23 +641,17 @@ fn columns_of_millimetre_boxes_hold_from_placement_offset_turned_and_mixed() {
         (
             "ten 1 mm cubes on a 1 cm cube",
             0.6,
-            std::iter::once(Level::cube(10.0 * mm))
-                .chain(cubes(10, mm))
-                .collect(),
+            ten_mm_cubes_on(10.0 * mm),
         ),
         (
             "ten 1 mm cubes on a 10 cm cube",
             0.6,
-            std::iter::once(Level::cube(100.0 * mm))
-                .chain(cubes(10, mm))
-                .collect(),
+            ten_mm_cubes_on(100.0 * mm),
         ),
         (
             "ten 1 mm cubes on a 10 m cube",
             0.6,
-            std::iter::once(Level::cube(10_000.0 * mm))
-                .chain(cubes(10, mm))
-                .collect(),
+            ten_mm_cubes_on(10_000.0 * mm),
         ),
         (
             "3, 2 and 1 mm cubes",

@@ -473,7 +473,6 @@ impl PhysicsWorld {
             // velocity above the lowest face): five 1 mm cubes at balanced sank 56 % of a
             // cube into each other in the first step, and fell where they were offset.
             let load = if touching && c.block.patch && pair.solved_steps < NEW_FACE_STEPS {
-                let (upper, _) = upper_lower(s.gravity, n, r.body_a, r.body_b);
                 let column =
                     supports.column_mass(upper, manifolds, pairs, s.gravity, states, mass_of);
                 load.max(column * g_h)

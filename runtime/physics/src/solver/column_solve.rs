@@ -428,9 +428,7 @@ impl ColumnSolve {
             }
         }
     }
-}
 
-impl ColumnSolve {
     /// Whether the group `faces`' solved aggregates (`rhs`) would take some point's normal
     /// impulse below zero.
     fn would_pull(&self, faces: &[Located]) -> bool {
