@@ -587,25 +587,28 @@ fn column_of_levels(preset: PhysicsPreset, friction: f32, levels: &[Level]) -> (
     (deepest, Vec3::new(moved.x, 0.0, moved.z).length() / size)
 }
 
-/// Columns of millimetre boxes as a user builds them, not only equal cubes on one axis:
+/// Columns of millimetre and centimetre boxes as a user builds them, not only equal cubes on one axis:
 /// each level a tenth of a cube aside of the one below, every other cube turned 45°, 5:1
-/// bricks, ten 1 mm cubes on a 1 cm, a 10 cm and a 10 m box, 3-2-1 mm cubes, frictionless
-/// cubes. At balanced
+/// bricks, ten 1 mm cubes on a 1 cm, a 10 cm and a 10 m box, ten 1 cm cubes on a 10 cm and
+/// a 10 m box, 3-2-1 mm cubes, frictionless cubes. At balanced
 /// and precise none sinks past 5 % of the smaller box from the first step on
 /// (`solve_stage::NEW_FACE_STEPS`: before a new face carried the column on it from its
 /// first step, five 1 mm cubes telescoped 56 % of a cube into each other in it, and the
 /// offset, turned and brick columns fell; before a face within the rounding of its
 /// coordinates was touching, `contact_constraint::TOUCHING_ROUNDING`, the cubes on the 10 cm
-/// and 10 m boxes sank 198 % at balanced), and the top box stays within a tenth of its size.
+/// and 10 m boxes sank 198 % at balanced; before a column face placed at rest could close
+/// at up to a step of free fall and stay a column in its first steps, ten 1 cm cubes on a
+/// 10 cm or 10 m box sank 5.3 %), and the top box stays within a tenth of its size.
 #[test]
-fn columns_of_millimetre_boxes_hold_from_placement_offset_turned_and_mixed() {
+fn columns_of_small_boxes_hold_from_placement_offset_turned_and_mixed() {
     let mm = 0.001;
     let cubes = |n: usize, size: f32| (0..n).map(move |_| Level::cube(size));
-    let ten_mm_cubes_on = |base: f32| -> Vec<Level> {
+    let ten_cubes_on = |base: f32, size: f32| -> Vec<Level> {
         std::iter::once(Level::cube(base))
-            .chain(cubes(10, mm))
+            .chain(cubes(10, size))
             .collect()
     };
+    let ten_mm_cubes_on = |base: f32| ten_cubes_on(base, mm);
     let columns: Vec<(&str, f32, Vec<Level>)> = vec![
         (
             "five 1 mm cubes, each 0.1 mm aside of the one below",
@@ -652,6 +655,16 @@ fn columns_of_millimetre_boxes_hold_from_placement_offset_turned_and_mixed() {
             "ten 1 mm cubes on a 10 m cube",
             0.6,
             ten_mm_cubes_on(10_000.0 * mm),
+        ),
+        (
+            "ten 1 cm cubes on a 10 cm cube",
+            0.6,
+            ten_cubes_on(100.0 * mm, 10.0 * mm),
+        ),
+        (
+            "ten 1 cm cubes on a 10 m cube",
+            0.6,
+            ten_cubes_on(10_000.0 * mm, 10.0 * mm),
         ),
         (
             "3, 2 and 1 mm cubes",
