@@ -2,7 +2,7 @@
 
 use glam::{Vec3, Vec3A};
 
-use super::heavy_on_light::{support_mass_scale, upper_lower};
+use super::heavy_on_light::{scaling_onset, support_mass_scale, upper_lower};
 use super::resting_accelerations::RestingAccelerations;
 use crate::body_type::BodyType;
 use crate::locked_axes::LockedAxes;
@@ -307,10 +307,9 @@ impl PhysicsWorld {
                 .map(|j| (j.body_a, j.body_b)),
             mass_of,
         );
-        // Only where some awake body is more than the ratio heavier than another (the
+        // Only where some awake body is more than the onset heavier than another (the
         // scaling is off below a ratio of 1).
-        if s.max_support_mass_ratio >= 1.0 && max_inv_mass > min_inv_mass * s.max_support_mass_ratio
-        {
+        if s.max_support_mass_ratio >= 1.0 && max_inv_mass > min_inv_mass * scaling_onset(&s) {
             let (arena, handles) = (&self.bodies.arena, &self.solver_handles);
             self.hidden_loads.update(
                 &self.manifold_refs,
