@@ -704,7 +704,8 @@ fn assert_columns_hold<S: std::fmt::Display>(columns: &[(S, f32, Vec<Level>)]) {
 /// only 3 times lighter (`heavy_on_light::support_mass_scale`), and the light box, passing
 /// on less of the weight than it carried, was rocked by it: the 2 mm cube fell off the
 /// 1 mm one, the 1.5 cm and 2 cm cubes drifted 25 % and 15 % of their size off the 1 cm one
-/// and the 2 cm cube on two 1 cm ones fell at balanced. Pairs within the square of the
+/// and the 2 cm cube on two 1 cm ones fell at balanced; frictionless columns of 1, 2 and
+/// 4 cm and of 3, 6 and 12 cm cubes slid apart at balanced. Pairs within the square of the
 /// step's sweeps (16:1 here) are now solved as they are (`heavy_on_light::scaling_onset`).
 #[test]
 fn a_larger_box_on_a_smaller_one_holds_and_stays_put() {
@@ -719,12 +720,19 @@ fn a_larger_box_on_a_smaller_one_holds_and_stays_put() {
         &[1.0, 2.0],
         &[1.0, 2.5],
     ];
+    // Frictionless, each cube twice the one below (8:1 a face).
+    let frictionless: &[&[f32]] = &[&[0.01, 0.02, 0.04], &[0.03, 0.06, 0.12], &[1.0, 2.0, 4.0]];
+    let cubes = |sizes: &[f32]| sizes.iter().map(|&s| Level::cube(s)).collect();
     let columns: Vec<_> = columns
         .iter()
-        .map(|sizes| {
-            let levels = sizes.iter().map(|&s| Level::cube(s)).collect();
-            (format!("cubes of {sizes:?} m"), 0.6, levels)
-        })
+        .map(|sizes| (format!("cubes of {sizes:?} m"), 0.6, cubes(sizes)))
+        .chain(frictionless.iter().map(|sizes| {
+            (
+                format!("frictionless cubes of {sizes:?} m"),
+                0.0,
+                cubes(sizes),
+            )
+        }))
         .collect();
     assert_columns_hold(&columns);
 }
