@@ -552,8 +552,8 @@ impl PhysicsWorld {
             // column above it settles (the second face of ten 1 cm cubes on a 10 cm box
             // closed at 0.11 g·dt in its second step, lost its column stiffness and waited
             // `COLUMN_SETTLE_STEPS` for it, sinking 5.3 % of a cube meanwhile); it rests
-            // while it closes slower than one step of free fall, which no body that fell
-            // onto it does.
+            // while it closes slower than one step of free fall, as a body that fell onto it
+            // for longer than a step does not.
             let placed =
                 pair.solved_steps < NEW_FACE_STEPS && pair.column_steps == pair.solved_steps;
             let resting = |c: &ContactConstraint| {
