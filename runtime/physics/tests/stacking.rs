@@ -707,6 +707,9 @@ fn assert_columns_hold<S: std::fmt::Display>(columns: &[(S, f32, Vec<Level>)]) {
 /// and the 2 cm cube on two 1 cm ones fell at balanced; frictionless columns of 1, 2 and
 /// 4 cm and of 3, 6 and 12 cm cubes slid apart at balanced. Pairs within the square of the
 /// step's sweeps (16:1 here) are now solved as they are (`heavy_on_light::scaling_onset`).
+/// Past it, frictionless, a 3 or 5 cm cube slid off a 1 cm one and a 10 cm one went through
+/// it at balanced while the face under the light cube was kept from being a column face
+/// (`pipeline/solve_stage.rs`, `carries_hidden`).
 #[test]
 fn a_larger_box_on_a_smaller_one_holds_and_stays_put() {
     let columns: &[&[f32]] = &[
@@ -720,8 +723,16 @@ fn a_larger_box_on_a_smaller_one_holds_and_stays_put() {
         &[1.0, 2.0],
         &[1.0, 2.5],
     ];
-    // Frictionless, each cube twice the one below (8:1 a face).
-    let frictionless: &[&[f32]] = &[&[0.01, 0.02, 0.04], &[0.03, 0.06, 0.12], &[1.0, 2.0, 4.0]];
+    // Frictionless: each cube twice the one below (8:1 a face), and 27:1 to 1000:1 on a
+    // 1 cm cube (scaled, `heavy_on_light::support_mass_scale`).
+    let frictionless: &[&[f32]] = &[
+        &[0.01, 0.02, 0.04],
+        &[0.03, 0.06, 0.12],
+        &[1.0, 2.0, 4.0],
+        &[0.01, 0.03],
+        &[0.01, 0.05],
+        &[0.01, 0.1],
+    ];
     let cubes = |sizes: &[f32]| sizes.iter().map(|&s| Level::cube(s)).collect();
     let columns: Vec<_> = columns
         .iter()
