@@ -35,10 +35,14 @@ pub(crate) fn support_mass_scale(
 ) -> [f32; 2] {
     let (a, b) = (&states[r.body_a as usize], &states[r.body_b as usize]);
     let max_ratio = settings.max_support_mass_ratio;
-    let onset = scaling_onset(settings);
     let (ia, ib) = (a.inv_mass.max_element(), b.inv_mass.max_element());
-    // Most pairs: masses within the onset (or a static or kinematic body), nothing to do.
-    if !(ia > ib * onset || ib > ia * onset) || ia == 0.0 || ib == 0.0 {
+    // Most pairs: masses within the ratio, or a static or kinematic body: nothing to do
+    // (tested before the onset is computed: this runs for every manifold every step).
+    if !(ia > ib * max_ratio || ib > ia * max_ratio) || ia == 0.0 || ib == 0.0 {
+        return [1.0; 2];
+    }
+    let onset = scaling_onset(settings);
+    if !(ia > ib * onset || ib > ia * onset) {
         return [1.0; 2];
     }
     let gravity = settings.gravity;

@@ -559,9 +559,9 @@ impl PhysicsWorld {
             // `COLUMN_SETTLE_STEPS` for it, sinking 5.3 % of a cube meanwhile); it rests
             // while it closes slower than one step of free fall, as a body that fell onto it
             // for longer than a step does not.
-            let placed =
-                pair.solved_steps < NEW_FACE_STEPS && pair.column_steps == pair.solved_steps;
             let resting = |c: &ContactConstraint| {
+                let placed =
+                    pair.solved_steps < NEW_FACE_STEPS && pair.column_steps == pair.solved_steps;
                 let rest_speed = column_rest_speed(budget, used_hz, g, s.dt);
                 let rest_speed = if placed {
                     rest_speed.max(g * s.dt)
