@@ -587,11 +587,11 @@ fn column_of_levels(preset: PhysicsPreset, friction: f32, levels: &[Level]) -> (
     (deepest, Vec3::new(moved.x, 0.0, moved.z).length() / size)
 }
 
-/// Columns of millimetre and centimetre boxes as a user builds them, not only equal cubes on one axis:
-/// each level a tenth of a cube aside of the one below, every other cube turned 45°, 5:1
-/// bricks, ten 1 mm cubes on a 1 cm, a 10 cm and a 10 m box, ten 1 cm cubes on a 10 cm and
-/// a 10 m box, 3-2-1 mm cubes, frictionless cubes. At balanced
-/// and precise none sinks past 5 % of the smaller box from the first step on
+/// Columns of millimetre and centimetre boxes as a user builds them, not only equal cubes
+/// on one axis: each level a tenth of a cube aside of the one below, every other cube
+/// turned 45°, 5:1 bricks, ten 1 mm cubes on a 1 cm, a 10 cm and a 10 m box, ten 1 cm cubes
+/// on a 10 cm and a 10 m box, 3-2-1 mm cubes, frictionless cubes. At balanced and precise
+/// none sinks past 5 % of the smaller box from the first step on
 /// (`solve_stage::NEW_FACE_STEPS`: before a new face carried the column on it from its
 /// first step, five 1 mm cubes telescoped 56 % of a cube into each other in it, and the
 /// offset, turned and brick columns fell; before a face within the rounding of its
