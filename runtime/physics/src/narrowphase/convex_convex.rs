@@ -56,8 +56,25 @@ pub(crate) fn convex_convex(
     if g.status == GjkStatus::NotConverged {
         stats.gjk_not_converged += 1;
     }
-    let (n, sep, wa, wb) = if g.status != GjkStatus::Overlapping && g.distance > EPA_SWITCH_DISTANCE
-    {
+    // A core far larger than the other (a wall kilometres wide, a long triangle) puts
+    // GJK's and EPA's simplices kilometres from the contact: their normal is off by 1e-4 rad
+    // of rounding or, for a small body barely touching, by tens of degrees (a bullet resting
+    // against a 10 km hull wall was pushed sideways instead of back, and crept through it),
+    // and GJK's distance, which rounding only lengthens, is no test of being apart: a 10 cm
+    // box resting on a triangle 2 km wide, 10 m from its corner, was measured 0.6 m away
+    // (past the margin) three steps in four, fell into it and was pushed back out. The face
+    // normals of both cores, measured from support points, give the axis and a lower bound
+    // on the distance there.
+    let (reach_a, reach_b) = (core_reach(a), core_reach(b));
+    let (n, sep, wa, wb) = if reach_a.max(reach_b) > LARGE_CORE_RATIO * reach_a.min(reach_b) {
+        // The best lower bound on the distance among GJK's normal and the face normals.
+        let (gap, axis) = convex_gap_after(&g, a, pa, ra, b, pb, rb);
+        if gap > margin {
+            return None;
+        }
+        let s = support(a, pa, b, pb, axis);
+        (axis, gap, s.a, s.b)
+    } else if g.status != GjkStatus::Overlapping && g.distance > EPA_SWITCH_DISTANCE {
         let sep = g.distance - ra - rb;
         if sep > margin {
             return None;
@@ -71,23 +88,6 @@ pub(crate) fn convex_convex(
             stats.epa_failures += 1;
         }
         (e.normal, -e.depth - ra - rb, e.point_a, e.point_b)
-    };
-    // A core far larger than the other (a wall kilometres wide, a long triangle) puts
-    // GJK's and EPA's simplices kilometres from the contact: their normal is off by 1e-4 rad
-    // of rounding or, for a small body barely touching, by tens of degrees (a bullet resting
-    // against a 10 km hull wall was pushed sideways instead of back, and crept through it).
-    // The face normals of both cores, measured from support points, give the axis there.
-    let (reach_a, reach_b) = (core_reach(a), core_reach(b));
-    let (n, sep, wa, wb) = if reach_a.max(reach_b) > LARGE_CORE_RATIO * reach_a.min(reach_b) {
-        // The best lower bound on the distance among GJK's normal and the face normals.
-        let (gap, axis) = convex_gap_after(&g, a, pa, ra, b, pb, rb);
-        if gap > margin {
-            return None;
-        }
-        let s = support(a, pa, b, pb, axis);
-        (axis, gap, s.a, s.b)
-    } else {
-        (n, sep, wa, wb)
     };
     let single = || {
         let p = (wa + n * ra + wb - n * rb) * 0.5;
