@@ -58,32 +58,16 @@ impl RawManifold {
         self.normal = -self.normal;
     }
 
-    /// Keeps at most [`MAX_MANIFOLD_POINTS`] points: the one farthest from the points' centre
-    /// in the normal plane, the farthest from it, then the two that enlarge the contact
-    /// polygon most (area in the normal plane).
-    ///
-    /// Chosen by where the points are, not how deep: the face of a box turned on the box
-    /// under it clips to an octagon, and a face that rocks by micro-radians changes which
-    /// corner is deepest each half period. Started from the deepest point, the kept four
-    /// changed with it, and the face's points (and their warm-started impulses) swapped
-    /// sides in step with the rocking and fed it: a frictionless column of ten 1 m boxes,
-    /// each turned by up to 0.5 rad about the vertical, rocked apart within 2 s at fast,
-    /// and a 10 cm 3-box stack so turned and offset within 0.3 s. A planar face's depth is
-    /// linear over it, so the deepest of the clipped points is a corner of the polygon and
-    /// the largest quadrilateral keeps it or a point beside it.
+    /// Keeps at most [`MAX_MANIFOLD_POINTS`] points: the deepest, the farthest from it, then
+    /// the two that enlarge the contact polygon most (area in the normal plane).
     pub fn reduce(&mut self) {
         let pts = &mut self.points;
         if pts.len() <= MAX_MANIFOLD_POINTS {
             return;
         }
         let n = self.normal;
-        let centre = pts.iter().map(|p| p.point).sum::<Vec3>() / pts.len() as f32;
-        let reach = |p: Vec3| {
-            let d = p - centre;
-            (d - n * d.dot(n)).length_squared()
-        };
         let i0 = (0..pts.len())
-            .max_by(|&a, &b| reach(pts[a].point).total_cmp(&reach(pts[b].point)))
+            .min_by(|&a, &b| pts[a].separation.total_cmp(&pts[b].separation))
             .unwrap_or(0);
         let p0 = pts[i0].point;
         let i1 = (0..pts.len())
