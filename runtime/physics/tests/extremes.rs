@@ -383,15 +383,7 @@ fn degenerate_hulls_never_panic_and_gjk_epa_failures_stay_under_1_percent() {
         })
         .collect();
     // Coincident faces: three hull cubes stacked exactly face on face, plus a sliver on top.
-    let cube: Vec<Vec3> = (0..8)
-        .map(|i| {
-            Vec3::new(
-                if i & 1 == 0 { -0.5 } else { 0.5 },
-                if i & 2 == 0 { -0.5 } else { 0.5 },
-                if i & 4 == 0 { -0.5 } else { 0.5 },
-            )
-        })
-        .collect();
+    let cube = cube_corners(0.5);
     for i in 0..3 {
         let b = w.insert_body(RigidBodyDesc::dynamic().translation(Vec3::new(
             0.0,

@@ -39,16 +39,7 @@ fn floor_world(preset: PhysicsPreset) -> PhysicsWorld {
 
 /// A cube of half size `half` as a hull (the shape a model's collider gets).
 fn hull_cube(half: f32) -> ColliderDesc {
-    let corners: Vec<Vec3> = (0..8)
-        .map(|i| {
-            Vec3::new(
-                if i & 1 == 0 { -half } else { half },
-                if i & 2 == 0 { -half } else { half },
-                if i & 4 == 0 { -half } else { half },
-            )
-        })
-        .collect();
-    ColliderDesc::convex_hull(&corners).expect("a cube is a hull")
+    ColliderDesc::convex_hull(&cube_corners(half)).expect("a cube is a hull")
 }
 
 /// Cubes of half size `half` stacked at `(x, z)` on the floor, run for 10 s. Returns, over the cubes, the largest

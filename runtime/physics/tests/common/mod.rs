@@ -15,6 +15,19 @@ pub fn world_with_ground(friction: f32) -> (PhysicsWorld, BodyHandle) {
     (w, g)
 }
 
+/// The eight corners of a cube of half size `half` centred at the origin (for hull cubes).
+pub fn cube_corners(half: f32) -> Vec<Vec3> {
+    (0..8)
+        .map(|i| {
+            Vec3::new(
+                if i & 1 == 0 { -half } else { half },
+                if i & 2 == 0 { -half } else { half },
+                if i & 4 == 0 { -half } else { half },
+            )
+        })
+        .collect()
+}
+
 /// Steps `n` times.
 pub fn run(w: &mut PhysicsWorld, n: usize) {
     for _ in 0..n {
