@@ -154,7 +154,6 @@ pub(crate) fn box_box(
     if m.points.is_empty() {
         return None;
     }
-    m.reduce();
     to_frame(&mut m);
     Some(m)
 }

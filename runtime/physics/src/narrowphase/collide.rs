@@ -7,7 +7,7 @@ use super::capsule_contacts::{capsule_capsule, capsule_sphere};
 use super::convex_convex::{convex_convex, ClipScratch};
 use super::half_space_contacts::half_space_convex;
 use super::narrow_stats::NarrowStats;
-use super::raw_manifold::RawManifold;
+use super::raw_manifold::{RawManifold, ReduceFrom};
 use super::sphere_box::box_sphere;
 use super::sphere_sphere::sphere_sphere;
 use super::trimesh_contacts::trimesh_convex;
@@ -23,7 +23,8 @@ pub(crate) struct CollideScratch {
 
 /// Contact manifolds between shape A at `pa` and shape B at `pb` (poses in any common frame;
 /// the caller passes a frame centred near A for precision). Normals point from A to B.
-/// Only contacts with separation at most `margin` are produced.
+/// Only contacts with separation at most `margin` are produced, each manifold reduced to
+/// four points starting `from` (see [`RawManifold::reduce`]).
 #[allow(clippy::too_many_arguments)]
 pub(crate) fn collide(
     a: &Shape,
@@ -31,6 +32,7 @@ pub(crate) fn collide(
     b: &Shape,
     pb: &Pose,
     margin: f32,
+    from: ReduceFrom,
     out: &mut Vec<RawManifold>,
     stats: &mut NarrowStats,
     scratch: &mut CollideScratch,
@@ -64,7 +66,7 @@ pub(crate) fn collide(
         | (S::Sphere(_) | S::Cuboid(_) | S::Capsule(_) | S::ConvexHull(_), S::HalfSpace(_))
         | (S::Sphere(_), S::Capsule(_))
         | (S::Sphere(_) | S::Cuboid(_) | S::Capsule(_) | S::ConvexHull(_), S::TriMesh(_)) => {
-            collide(b, pb, a, pa, margin, out, stats, scratch);
+            collide(b, pb, a, pa, margin, from, out, stats, scratch);
             true
         }
         (S::Cuboid(x), S::Cuboid(y)) => {
@@ -145,8 +147,9 @@ pub(crate) fn collide(
             false
         }
     };
-    if flipped {
-        for m in &mut out[start..] {
+    for m in &mut out[start..] {
+        m.reduce(from);
+        if flipped {
             m.flip();
         }
     }

@@ -143,6 +143,5 @@ pub(crate) fn convex_convex(
     if added == 0 {
         return Some(single());
     }
-    m.reduce();
     Some(m)
 }

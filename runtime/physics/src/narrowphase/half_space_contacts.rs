@@ -42,6 +42,5 @@ pub(crate) fn half_space_convex(
     if m.points.is_empty() {
         return None;
     }
-    m.reduce();
     Some(m)
 }

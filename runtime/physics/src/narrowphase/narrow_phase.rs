@@ -11,7 +11,7 @@ use super::contact_point::ContactPoint;
 use super::narrow_body::NarrowBody;
 use super::narrow_stats::NarrowStats;
 use super::pair_hasher::BuildPairHasher;
-use super::raw_manifold::RawManifold;
+use super::raw_manifold::{RawManifold, ReduceFrom};
 use super::sphere_sphere::ball_contact;
 use crate::body_handle::BodyHandle;
 use crate::body_set::BodySet;
@@ -402,6 +402,16 @@ impl NarrowPhase {
             let shift = if smaller_b { centre_b } else { centre_a };
             let pa = Pose::new(centre_a - shift, rot_a * ca.local_pose.rotation);
             let pb = Pose::new(centre_b - shift, rot_b * cb.local_pose.rotation);
+            // A frictionless face keeps its normal through a small turn (see
+            // `FRICTIONLESS_NORMAL_HOLD_ANGLE`) and its points where they are (see
+            // `RawManifold::reduce`).
+            let frictionless =
+                pair.static_friction.max(pair.dynamic_friction) < crate::solver::LEVEL_MAX_FRICTION;
+            let from = if frictionless {
+                ReduceFrom::Outermost
+            } else {
+                ReduceFrom::Deepest
+            };
             self.raw.clear();
             collide(
                 &ca.shape,
@@ -409,6 +419,7 @@ impl NarrowPhase {
                 &cb.shape,
                 &pb,
                 margin,
+                from,
                 &mut self.raw,
                 stats,
                 &mut self.scratch,
@@ -429,10 +440,6 @@ impl NarrowPhase {
             pair.manifolds
                 .resize_with(self.raw.len(), ContactManifold::default);
             let mut min_sep = f32::MAX;
-            // A frictionless face keeps its normal through a small turn (see
-            // `FRICTIONLESS_NORMAL_HOLD_ANGLE`).
-            let frictionless =
-                pair.static_friction.max(pair.dynamic_friction) < crate::solver::LEVEL_MAX_FRICTION;
             for (m, rm) in pair.manifolds.iter_mut().zip(&self.raw) {
                 let hold =
                     frictionless && rm.points.len() > 1 && m.normal.dot(rm.normal) > hold_cos;

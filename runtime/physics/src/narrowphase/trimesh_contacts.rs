@@ -26,8 +26,8 @@ pub const TRIMESH_SAME_POINT_FRACTION: f32 = 1e-3;
 /// Mesh (shape A at `pm`) against convex `shape` (B at `pc`). Appends manifolds, normals
 /// from the mesh toward the convex shape.
 ///
-/// Manifolds of coplanar triangles are merged into one and reduced to four points, as one
-/// face. A body resting across the shared edge of two triangles otherwise had a manifold per
+/// Manifolds of coplanar triangles are merged into one, as one face (reduced to four points
+/// with the others by `collide`). A body resting across the shared edge of two triangles otherwise had a manifold per
 /// triangle, each clipped to its half of the face, with the corners on the shared edge in
 /// both: those corners had twice the stiffness of the others and the face rocked on them.
 /// A 1 mm box on the diagonal of a two-triangle floor drifted 7 % of its size in 10 s at
@@ -82,7 +82,7 @@ pub(crate) fn trimesh_convex(
 
 /// Merges the manifolds of `out[first..]` whose normals agree within
 /// [`TRIMESH_COPLANAR_COS`] into the first of them, dropping points within `same` metres of
-/// one already there, and reduces each merged one to four points.
+/// one already there (`collide` reduces each to four points).
 fn merge_coplanar(out: &mut Vec<RawManifold>, first: usize, same: f32) {
     if out.len() - first < 2 {
         return;
@@ -90,7 +90,6 @@ fn merge_coplanar(out: &mut Vec<RawManifold>, first: usize, same: f32) {
     let same2 = same * same;
     let mut i = first;
     while i < out.len() {
-        let mut merged = false;
         let mut j = i + 1;
         while j < out.len() {
             if out[j].normal.dot(out[i].normal) >= TRIMESH_COPLANAR_COS {
@@ -104,13 +103,9 @@ fn merge_coplanar(out: &mut Vec<RawManifold>, first: usize, same: f32) {
                         out[i].points.push(p);
                     }
                 }
-                merged = true;
             } else {
                 j += 1;
             }
-        }
-        if merged {
-            out[i].reduce();
         }
         i += 1;
     }

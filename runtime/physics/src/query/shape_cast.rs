@@ -10,7 +10,7 @@ use crate::body_handle::BodyHandle;
 use crate::collider::Collider;
 use crate::collider_handle::ColliderHandle;
 use crate::narrowphase::collide::{collide, CollideScratch};
-use crate::narrowphase::raw_manifold::RawManifold;
+use crate::narrowphase::raw_manifold::{RawManifold, ReduceFrom};
 use crate::narrowphase::NarrowStats;
 use crate::physics_world::PhysicsWorld;
 use crate::pose::Pose;
@@ -159,6 +159,7 @@ impl Cast<'_> {
                 &c.shape,
                 &other,
                 margin,
+                ReduceFrom::Deepest,
                 &mut scratch.manifolds,
                 &mut scratch.stats,
                 &mut scratch.collide,

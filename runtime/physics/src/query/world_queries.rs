@@ -7,6 +7,7 @@ use super::ray_hit::RayHit;
 use crate::aabb::Aabb;
 use crate::collider_handle::ColliderHandle;
 use crate::narrowphase::collide::{collide, CollideScratch};
+use crate::narrowphase::raw_manifold::ReduceFrom;
 use crate::narrowphase::NarrowStats;
 use crate::physics_world::PhysicsWorld;
 use crate::pose::Pose;
@@ -120,6 +121,7 @@ impl PhysicsWorld {
                 &c.shape,
                 &qb,
                 0.0,
+                ReduceFrom::Deepest,
                 &mut manifolds,
                 &mut stats,
                 &mut scratch,
