@@ -1,6 +1,6 @@
-//! Columns of three and five equal cubes, every other one set aside by 10–30 % of its size,
+//! Columns of three, five and ten equal cubes, every other one set aside by 10–30 % of its size,
 //! friction 0.5, placed touching on the ground, run for 10 s in both engines at each preset.
-//! Prints, per preset and engine, how many of the 42 columns (5 mm–1 m) moved a cube more
+//! Prints, per preset and engine, how many of the 63 columns (5 mm–1 m) moved a cube more
 //! than 1 % of its size sideways after they settled (between 2 s and 10 s: the tilt soft
 //! contacts take under an off-centre load in the first steps is not counted), and the worst.
 //! Issue 15's class of small offset stacks with friction that wobble (see
@@ -16,7 +16,7 @@ use onyx_physics_bench::engine::{BodySpec, EngineKind, ShapeSpec, StepSettings};
 const SIZES: [f32; 7] = [0.005, 0.01, 0.02, 0.05, 0.1, 0.3, 1.0];
 
 /// Cubes per column.
-const COUNTS: [usize; 2] = [3, 5];
+const COUNTS: [usize; 3] = [3, 5, 10];
 
 /// How far every other cube is set aside, as a share of its size.
 const OFFSETS: [f32; 3] = [0.1, 0.2, 0.3];
