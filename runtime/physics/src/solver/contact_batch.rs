@@ -167,6 +167,15 @@ pub const LEVEL_MAX_FRICTION: f32 = 1e-3;
 /// after 8 s; from 0.95 down to 0.5 the columns hold and so do the offset stacks of 0 leak.
 pub const LEVEL_SHARE: f32 = 0.75;
 
+/// The stiffness in tilt, Hz, of a face of stiffness `hertz` levelled with `share` of its
+/// leak the patch's mean: its tilt modes leak `1 − share` of their impulse, so they are
+/// `1 / (1 − share)` times as stiff as its depth (twice the frequency at [`LEVEL_SHARE`]).
+#[must_use]
+#[inline]
+pub fn levelled_tilt_hertz(hertz: f32, share: f32) -> f32 {
+    hertz / (1.0 - share).sqrt()
+}
+
 /// How much of the leak of a face levelled under its load (see
 /// [`levelled_for_load`]) is the patch's mean impulse: less than a frictionless face's
 /// [`LEVEL_SHARE`], so that a brick resting on two supports that sink unevenly keeps some
