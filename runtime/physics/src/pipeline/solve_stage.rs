@@ -572,8 +572,9 @@ impl PhysicsWorld {
                 (softness, used)
             };
             let (softness, used_hz) = stiffen(max_size_hertz);
-            // Only a face stiffened past its load's stiffness for its size budget, between
-            // bodies resting on one face each: a column, not a pyramid (whose bricks rest
+            // Only a face stiff past one radian a substep, whatever set its stiffness (its
+            // depth budget or the base rate; see `column_face`), between bodies resting on
+            // one face each: a column, not a pyramid (whose bricks rest
             // on two and spread the load they carry), and not under a heavy body on a light
             // one (its friction carries the load the scaling hides, `HiddenLoads`; taken
             // for a column, a 10 cm cube on a 1 cm one rocked 11 % of its size aside at
@@ -622,20 +623,18 @@ impl PhysicsWorld {
                 }
             };
             // A frictionless face is always levelled (`FaceContact::level_patch`), and so
-            // stiffer in tilt than in depth: its column is a chain stiff in tilt whatever
-            // set its depth stiffness, and taken for a column by its tilt. Left to the
-            // iterations, a frictionless zig-zag column of ten 1 m cubes (every other one
-            // 10-30 % aside) at fast fluttered in both tilts, growing 1.4 times every
-            // 0.23 s, and fell within 5 s (`examples/offset_stacks.rs` in the physics bench).
-            let frictionless = c.friction.friction < LEVEL_MAX_FRICTION;
-            let tilt_hz = if frictionless {
+            // stiffer in tilt than in depth: taken for a column by its tilt. By its depth, a
+            // frictionless zig-zag column of ten 1 m cubes (every other one 10-30 % aside)
+            // at fast was left to the iterations, fluttered in both tilts, growing 1.4 times
+            // every 0.23 s, and fell within 5 s (`examples/offset_stacks.rs` in the physics
+            // bench).
+            let tilt_hz = if c.friction.friction < LEVEL_MAX_FRICTION {
                 levelled_tilt_hertz(used_hz, LEVEL_SHARE)
             } else {
                 used_hz
             };
             c.column = c.block.patch
                 && g > 0.0
-                && (used_hz > load_hz || frictionless)
                 && column_face(column_load(), tilt_hz, h)
                 && !carries_hidden
                 && c.mass_scale == [1.0; 2]
