@@ -15,8 +15,8 @@ use crate::pipeline::jointed_masses::JointedMasses;
 use crate::rigid_body::mask_mat;
 use crate::solver::body_state::BodyState;
 use crate::solver::contact_batch::{
-    column_face, column_rest_speed, levelled_for_load, levelled_tilt_hertz, Jitter,
-    COLUMN_SETTLE_STEPS, LEVEL_MAX_FRICTION, LEVEL_SHARE, LOADED_LEVEL_SHARE,
+    column_face, column_rest_speed, levelled_for_load, Jitter, COLUMN_SETTLE_STEPS,
+    LEVEL_MAX_FRICTION, LEVEL_SHARE, LOADED_LEVEL_SHARE,
 };
 use crate::solver::contact_constraint::{
     prepare, touching_distance, ContactConstraint, FrictionPart, ManifoldRef, NormalBlock,
@@ -572,9 +572,8 @@ impl PhysicsWorld {
                 (softness, used)
             };
             let (softness, used_hz) = stiffen(max_size_hertz);
-            // Only a face stiff past one radian a substep, whatever set its stiffness (its
-            // depth budget or the base rate; see `column_face`), between bodies resting on
-            // one face each: a column, not a pyramid (whose bricks rest
+            // Only a face stiffened past its load's stiffness for its size budget, between
+            // bodies resting on one face each: a column, not a pyramid (whose bricks rest
             // on two and spread the load they carry), and not under a heavy body on a light
             // one (its friction carries the load the scaling hides, `HiddenLoads`; taken
             // for a column, a 10 cm cube on a 1 cm one rocked 11 % of its size aside at
@@ -622,20 +621,10 @@ impl PhysicsWorld {
                     0.0
                 }
             };
-            // A frictionless face is always levelled (`FaceContact::level_patch`), and so
-            // stiffer in tilt than in depth: taken for a column by its tilt. By its depth, a
-            // frictionless zig-zag column of ten 1 m cubes (every other one 10-30 % aside)
-            // at fast was left to the iterations, fluttered in both tilts, growing 1.4 times
-            // every 0.23 s, and fell within 5 s (`examples/offset_stacks.rs` in the physics
-            // bench).
-            let tilt_hz = if c.friction.friction < LEVEL_MAX_FRICTION {
-                levelled_tilt_hertz(used_hz, LEVEL_SHARE)
-            } else {
-                used_hz
-            };
             c.column = c.block.patch
                 && g > 0.0
-                && column_face(column_load(), tilt_hz, h)
+                && used_hz > load_hz
+                && column_face(column_load(), used_hz, h)
                 && !carries_hidden
                 && c.mass_scale == [1.0; 2]
                 && single(upper)

@@ -167,15 +167,6 @@ pub const LEVEL_MAX_FRICTION: f32 = 1e-3;
 /// after 8 s; from 0.95 down to 0.5 the columns hold and so do the offset stacks of 0 leak.
 pub const LEVEL_SHARE: f32 = 0.75;
 
-/// The stiffness in tilt, Hz, of a face of stiffness `hertz` levelled with `share` of its
-/// leak the patch's mean: its tilt modes leak `1 − share` of their impulse, so they are
-/// `1 / (1 − share)` times as stiff as its depth (twice the frequency at [`LEVEL_SHARE`]).
-#[must_use]
-#[inline]
-pub fn levelled_tilt_hertz(hertz: f32, share: f32) -> f32 {
-    hertz / (1.0 - share).sqrt()
-}
-
 /// How much of the leak of a face levelled under its load (see
 /// [`levelled_for_load`]) is the patch's mean impulse: less than a frictionless face's
 /// [`LEVEL_SHARE`], so that a brick resting on two supports that sink unevenly keeps some
@@ -214,13 +205,10 @@ pub const COLUMN_STIFFNESS: f32 = 1.0;
 /// marginal. Levelled, a face is stiff in tilt while as soft in depth; but a column of faces
 /// stiff in tilt is a chain the step's one iteration does not converge: the columns fell
 /// sooner levelled than not, until the column was solved again. Such faces are the ones
-/// stiffer than about one radian per substep, whatever made them so: the depth budget
-/// (small bodies under loads) or the base rate (a static ground face at twice the dynamic
-/// one). The ground face was once left out where the budget had not stiffened it (the
-/// ground face of a 20-box stack taken for one cost the stack 30 % then; nothing now), and
-/// a column of small cubes set aside in turn, levelled and solved as a whole above a
-/// ground face that was not, rocked on it: three 1 cm cubes, the middle one 20 % aside,
-/// walked 57 % of a cube within 10 s at 60 Hz × 4.
+/// the depth budget stiffened past about one radian per substep (small bodies under loads;
+/// the caller checks that the budget set the stiffness): larger bodies' faces, and a
+/// ground face at its base stiffness, are left as they were (the ground face of a 20-box
+/// stack taken for one cost the stack 30 %).
 #[must_use]
 #[inline]
 pub fn column_face(carried: f32, hertz: f32, h: f32) -> bool {
