@@ -28,6 +28,9 @@ pub(crate) struct ColumnSupports {
     /// Per solver body, its mass and the masses of the bodies resting on it through one face
     /// each, up the column (see [`Self::column_mass`]); empty until first asked.
     column_masses: Vec<f32>,
+    /// Per body (arena index), whether a column face rested on it at the end of the last
+    /// step (see [`Self::carries_column`]).
+    columns_on: Vec<bool>,
 }
 
 /// Longest column [`ColumnSupports::column_mass`] walks down from a body: the bound of its
@@ -82,6 +85,26 @@ impl ColumnSupports {
             .get(body as usize)
             .copied()
             .unwrap_or(0.0)
+    }
+
+    /// Forgets which bodies carried a column face (before the step's are marked).
+    pub fn forget_columns(&mut self) {
+        self.columns_on.fill(false);
+    }
+
+    /// Marks the body at arena index `body` as carrying a column face.
+    pub fn column_rests_on(&mut self, body: u32) {
+        let i = body as usize;
+        if self.columns_on.len() <= i {
+            self.columns_on.resize(i + 1, false);
+        }
+        self.columns_on[i] = true;
+    }
+
+    /// Whether a column face rested on the body at arena index `body` at the end of the last
+    /// step: the face it rests on is the base of that column.
+    pub fn carries_column(&self, body: u32) -> bool {
+        self.columns_on.get(body as usize).copied().unwrap_or(false)
     }
 
     /// Whether solver body `body` rests on one face at most (the static body, index 0,

@@ -347,12 +347,13 @@ impl PhysicsWorld {
         } else {
             RestingAccelerations::default()
         };
-        let (pairs, bodies, states, manifolds, supports) = (
+        let (pairs, bodies, states, manifolds, supports, handles) = (
             &self.narrowphase.pairs,
             &self.solver_bodies,
             &self.solver_states,
             &self.manifold_refs,
             &mut self.supports,
+            &self.solver_handles,
         );
         let mut prepare_one = |r: &ManifoldRef,
                                out: &mut PreparedManifold,
@@ -580,7 +581,6 @@ impl PhysicsWorld {
             // balanced). A frictionless face there carries no hidden load and may be one:
             // left out, a 10 cm frictionless cube on a 1 cm one rocked and went through it
             // at balanced, and a 3 or 5 cm one slid off it.
-            let mut single = |i: u32| supports.single(i, manifolds, pairs, s.gravity);
             // Resting: every point touching and closing or parting slower than
             // `column_rest_speed`. Tested last: the cheap tests rule out nearly every face
             // first. A new face that has been a column since it first touched was placed at
@@ -621,14 +621,19 @@ impl PhysicsWorld {
                     0.0
                 }
             };
+            // Stiff past a radian a substep: set so by its depth budget, or, at the base
+            // rate, under a column (its base face; see `column_face`).
             c.column = c.block.patch
                 && g > 0.0
-                && used_hz > load_hz
                 && column_face(column_load(), used_hz, h)
+                && (used_hz > load_hz
+                    || handles
+                        .get(upper as usize)
+                        .is_some_and(|&body| supports.carries_column(body)))
                 && !carries_hidden
                 && c.mass_scale == [1.0; 2]
-                && single(upper)
-                && single(lower)
+                && supports.single(upper, manifolds, pairs, s.gravity)
+                && supports.single(lower, manifolds, pairs, s.gravity)
                 && resting(c);
             // A column face settled for some steps, or one since it first touched, may
             // stiffen past the step's cap.
@@ -714,10 +719,19 @@ impl PhysicsWorld {
         // Store impulses for warm starting and events; a manifold's friction is shared among
         // its points in proportion to their normal impulses.
         let (refs, pairs) = (&self.manifold_refs, &mut self.narrowphase.pairs);
+        let (supports, handles) = (&mut self.supports, &self.solver_handles);
+        supports.forget_columns();
         self.contact_batches
             .for_each_result(params.jitter, |ri, result| {
                 let c = &refs[ri as usize];
                 let pair = &mut pairs[c.pair as usize];
+                if result.column {
+                    let n = pair.manifolds[c.manifold as usize].normal;
+                    let (_, lower) = upper_lower(s.gravity, n, c.body_a, c.body_b);
+                    if let Some(&body) = handles.get(lower as usize).filter(|_| lower != 0) {
+                        supports.column_rests_on(body);
+                    }
+                }
                 let m = &mut pair.manifolds[c.manifold as usize];
                 let count = usize::from(c.count);
                 let normal = &result.normal_impulse[..count];
