@@ -27,9 +27,10 @@ pub const TRIMESH_SAME_POINT_FRACTION: f32 = 1e-3;
 /// from the mesh toward the convex shape.
 ///
 /// Manifolds of coplanar triangles are merged into one, as one face (reduced to four points
-/// with the others by `collide`). A body resting across the shared edge of two triangles otherwise had a manifold per
-/// triangle, each clipped to its half of the face, with the corners on the shared edge in
-/// both: those corners had twice the stiffness of the others and the face rocked on them.
+/// with the others by `collide`). A body resting across the shared edge of two triangles
+/// otherwise had a manifold per triangle, each clipped to its half of the face, with the
+/// corners on the shared edge in both: those corners had twice the stiffness of the others
+/// and the face rocked on them.
 /// A 1 mm box on the diagonal of a two-triangle floor drifted 7 % of its size in 10 s at
 /// fast, and a column of three 1 cm cubes on it 36 % of a cube at balanced.
 #[allow(clippy::too_many_arguments)]
