@@ -573,8 +573,9 @@ impl PhysicsWorld {
                 (softness, used)
             };
             let (softness, used_hz) = stiffen(max_size_hertz);
-            // Only a face stiffened past its load's stiffness for its size budget, between
-            // bodies resting on one face each: a column, not a pyramid (whose bricks rest
+            // Only a face stiffened past its load's stiffness for its size budget (or the
+            // base face of a column, see below), between bodies resting on one face each: a
+            // column, not a pyramid (whose bricks rest
             // on two and spread the load they carry), and not under a heavy body on a light
             // one (its friction carries the load the scaling hides, `HiddenLoads`; taken
             // for a column, a 10 cm cube on a 1 cm one rocked 11 % of its size aside at
