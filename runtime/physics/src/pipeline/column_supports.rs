@@ -17,7 +17,8 @@ pub const SUPPORT_MIN_COS: f32 = std::f32::consts::FRAC_1_SQRT_2;
 /// gravity) it is the upper body of; a speculative face two cubes up does not count.
 ///
 /// Only a face the depth budget stiffens past `COLUMN_STIFFNESS` asks (or one at the base
-/// rate under a column, `Self::carries_column`), which nearly no scene has: counted for every manifold every step, this cost the 20-row pyramid about 1 %.
+/// rate under a column, `Self::carries_column`), which nearly no scene has: counted for
+/// every manifold every step, this cost the 20-row pyramid about 1 %.
 #[derive(Debug, Default)]
 pub(crate) struct ColumnSupports {
     counts: Vec<u8>,
