@@ -16,9 +16,11 @@ pub const SUPPORT_MIN_COS: f32 = std::f32::consts::FRAC_1_SQRT_2;
 /// Per solver body, the touching faces (two points or more, within [`SUPPORT_MIN_COS`] of
 /// gravity) it is the upper body of; a speculative face two cubes up does not count.
 ///
-/// Only a face the depth budget stiffens past `COLUMN_STIFFNESS` asks (or one at the base
-/// rate under a column, `Self::carries_column`), which nearly no scene has: counted for
-/// every manifold every step, this cost the 20-row pyramid about 1 %.
+/// Asked by a face the depth budget stiffens past `COLUMN_STIFFNESS` (or one at the base
+/// rate under or on a column, `Self::carries_column`, `Self::rests_on_column`), and by
+/// every face with friction whose chain may need levelling (`chain_level_share`): counted
+/// every step wherever a body rests on one face with friction (the 20-row pyramid's
+/// bottom row on the ground does, about 1 % of its step).
 #[derive(Debug, Default)]
 pub(crate) struct ColumnSupports {
     counts: Vec<u8>,
@@ -29,10 +31,20 @@ pub(crate) struct ColumnSupports {
     /// Per solver body, its mass and the masses of the bodies resting on it through one face
     /// each, up the column (see [`Self::column_mass`]); empty until first asked.
     column_masses: Vec<f32>,
-    /// Per body (arena index), whether a column face rested on it at the end of the last
-    /// step (see [`Self::carries_column`]).
-    columns_on: Vec<bool>,
+    /// Per solver body, how many bodies its column holds: it, those resting on it through
+    /// one face each up the column, and those it rests on so down to the base (see
+    /// [`Self::column_length`]); empty until first asked.
+    column_lengths: Vec<u16>,
+    /// Per body (arena index), whether a column face rested on it ([`CARRIES`]) and whether
+    /// it rested on a column face ([`RESTS`]) at the end of the last step (see
+    /// [`Self::carries_column`] and [`Self::rests_on_column`]).
+    columns_on: Vec<u8>,
 }
+
+/// A column face rested on the body (see [`ColumnSupports::carries_column`]).
+const CARRIES: u8 = 1;
+/// The body rested on a column face (see [`ColumnSupports::rests_on_column`]).
+const RESTS: u8 = 2;
 
 /// Longest column [`ColumnSupports::column_mass`] walks down from a body: the bound of its
 /// cost, far past any column one face can carry within its budget.
@@ -43,6 +55,7 @@ impl ColumnSupports {
     pub fn reset(&mut self) {
         self.counted = false;
         self.column_masses.clear();
+        self.column_lengths.clear();
     }
 
     /// The mass solver body `body` holds up: its own (`mass_of`) and that of every body
@@ -64,21 +77,10 @@ impl ColumnSupports {
         if self.column_masses.is_empty() {
             self.column_masses.extend(states.iter().map(&mass_of));
             for top in 0..self.counts.len().min(states.len()) {
-                if self.counts[top] != 1 {
-                    continue;
-                }
                 let mass = mass_of(&states[top]);
-                let mut at = top;
-                for _ in 0..MAX_COLUMN_WALK {
-                    let down = self.below[at] as usize;
-                    if down == 0 || down >= states.len() {
-                        break;
-                    }
+                let (counts, below) = (&self.counts, &self.below);
+                for down in Self::down_from(counts, below, top, states.len()) {
                     self.column_masses[down] += mass;
-                    if self.counts.get(down) != Some(&1) {
-                        break;
-                    }
-                    at = down;
                 }
             }
         }
@@ -88,24 +90,96 @@ impl ColumnSupports {
             .unwrap_or(0.0)
     }
 
-    /// Forgets which bodies carried a column face (before the step's are marked).
-    pub fn forget_columns(&mut self) {
-        self.columns_on.fill(false);
+    /// How many dynamic bodies the column of solver body `body` holds: it, every body
+    /// resting on it through one face each and on those up the column, and every body it
+    /// rests on so down to the column's base (one a pyramid's brick rests on two of is
+    /// its base). 1 for a body in no column; 0 for the static body.
+    pub fn column_length(
+        &mut self,
+        body: u32,
+        manifolds: &[ManifoldRef],
+        pairs: &[ContactPair],
+        gravity: Vec3,
+        bodies: usize,
+    ) -> u16 {
+        if body == 0 {
+            return 0;
+        }
+        if !self.counted {
+            self.count(manifolds, pairs, gravity);
+        }
+        if self.column_lengths.is_empty() {
+            // Bodies above, then (once every walk is in) the whole column.
+            let mut under = vec![0u16; bodies];
+            self.column_lengths.resize(bodies, 1);
+            let (counts, below) = (&self.counts, &self.below);
+            for (top, under) in under.iter_mut().enumerate().take(counts.len()) {
+                for down in Self::down_from(counts, below, top, bodies) {
+                    self.column_lengths[down] = self.column_lengths[down].saturating_add(1);
+                    *under = under.saturating_add(1);
+                }
+            }
+            for (length, under) in self.column_lengths.iter_mut().zip(under) {
+                *length = length.saturating_add(under);
+            }
+        }
+        self.column_lengths.get(body as usize).copied().unwrap_or(1)
     }
 
-    /// Marks the body at arena index `body` as carrying a column face.
-    pub fn column_rests_on(&mut self, body: u32) {
-        let i = body as usize;
-        if self.columns_on.len() <= i {
-            self.columns_on.resize(i + 1, false);
+    /// The dynamic bodies under solver body `top` down its column: each one the body above
+    /// rests on through its one support face, ending with the first that rests on more or
+    /// none (the column's base), at most [`MAX_COLUMN_WALK`].
+    fn down_from<'a>(
+        counts: &'a [u8],
+        below: &'a [u32],
+        top: usize,
+        bodies: usize,
+    ) -> impl Iterator<Item = usize> + 'a {
+        let mut at = (counts.get(top) == Some(&1)).then_some(top);
+        std::iter::from_fn(move || {
+            let down = below[at?] as usize;
+            if down == 0 || down >= bodies {
+                return None;
+            }
+            at = (counts.get(down) == Some(&1)).then_some(down);
+            Some(down)
+        })
+        .take(MAX_COLUMN_WALK)
+    }
+
+    /// Forgets which bodies carried or rested on a column face (before the step's are
+    /// marked).
+    pub fn forget_columns(&mut self) {
+        self.columns_on.fill(0);
+    }
+
+    /// Marks a column face between the bodies at arena indices `upper` and `lower` (`None`
+    /// for the static body).
+    pub fn column_face(&mut self, upper: Option<u32>, lower: Option<u32>) {
+        for (body, flag) in [(upper, RESTS), (lower, CARRIES)] {
+            if let Some(i) = body.map(|b| b as usize) {
+                if self.columns_on.len() <= i {
+                    self.columns_on.resize(i + 1, 0);
+                }
+                self.columns_on[i] |= flag;
+            }
         }
-        self.columns_on[i] = true;
     }
 
     /// Whether a column face rested on the body at arena index `body` at the end of the last
     /// step: the face it rests on is the base of that column.
     pub fn carries_column(&self, body: u32) -> bool {
-        self.columns_on.get(body as usize).copied().unwrap_or(false)
+        self.flags(body) & CARRIES != 0
+    }
+
+    /// Whether the body at arena index `body` rested on a column face at the end of the last
+    /// step: a face it carries goes on with that column up.
+    pub fn rests_on_column(&self, body: u32) -> bool {
+        self.flags(body) & RESTS != 0
+    }
+
+    fn flags(&self, body: u32) -> u8 {
+        self.columns_on.get(body as usize).copied().unwrap_or(0)
     }
 
     /// Whether solver body `body` rests on one face at most (the static body, index 0,

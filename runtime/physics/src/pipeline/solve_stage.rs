@@ -15,8 +15,8 @@ use crate::pipeline::jointed_masses::JointedMasses;
 use crate::rigid_body::mask_mat;
 use crate::solver::body_state::BodyState;
 use crate::solver::contact_batch::{
-    column_face, column_rest_speed, levelled_for_load, Jitter, COLUMN_SETTLE_STEPS,
-    LEVEL_MAX_FRICTION, LEVEL_SHARE, LOADED_LEVEL_SHARE,
+    chain_level_share, column_face, column_rest_speed, levelled_for_load, Jitter,
+    COLUMN_LOAD_RATIO, COLUMN_SETTLE_STEPS, LEVEL_MAX_FRICTION, LEVEL_SHARE, LOADED_LEVEL_SHARE,
 };
 use crate::solver::contact_constraint::{
     prepare, touching_distance, ContactConstraint, FrictionPart, ManifoldRef, NormalBlock,
@@ -623,14 +623,15 @@ impl PhysicsWorld {
                 }
             };
             // Stiff past a radian a substep: set so by its depth budget, or, at the base
-            // rate, under a column (its base face; see `column_face`).
+            // rate, under a column (its base face); or on a column (see `column_face`).
+            let arena = |b: u32| handles.get(b as usize).filter(|_| b != 0);
             c.column = c.block.patch
                 && g > 0.0
-                && column_face(column_load(), used_hz, h)
-                && (used_hz > load_hz
-                    || handles
-                        .get(upper as usize)
-                        .is_some_and(|&body| supports.carries_column(body)))
+                && (column_face(column_load(), used_hz, h)
+                    && (used_hz > load_hz
+                        || arena(upper).is_some_and(|&b| supports.carries_column(b)))
+                    || column_load() > COLUMN_LOAD_RATIO
+                        && arena(lower).is_some_and(|&b| supports.rests_on_column(b)))
                 && !carries_hidden
                 && c.mass_scale == [1.0; 2]
                 && supports.single(upper, manifolds, pairs, s.gravity)
@@ -666,12 +667,28 @@ impl PhysicsWorld {
                     });
                 }
             }
-            c.load_level_share = if c.column {
-                LEVEL_SHARE
-            } else if levelled_for_load(ratio, used_hz, pair.size, g) {
+            // Levelled as a column face, for its load, or for the column it is in (a face
+            // with friction between bodies resting on one face each: a frictionless face is
+            // levelled anyway).
+            let for_load = if levelled_for_load(ratio, used_hz, pair.size, g) {
                 LOADED_LEVEL_SHARE
             } else {
                 0.0
+            };
+            c.load_level_share = if c.column {
+                LEVEL_SHARE
+            } else if c.block.patch
+                && g > 0.0
+                && c.friction.friction >= LEVEL_MAX_FRICTION
+                && supports.single(upper, manifolds, pairs, s.gravity)
+                && supports.single(lower, manifolds, pairs, s.gravity)
+            {
+                let length =
+                    supports.column_length(upper, manifolds, pairs, s.gravity, states.len());
+                let chain = chain_level_share(f32::from(length), ratio, used_hz, pair.size, g, h);
+                for_load.max(chain)
+            } else {
+                for_load
             };
         };
         let mut overloads: Vec<Overload> = Vec::new();
@@ -728,10 +745,9 @@ impl PhysicsWorld {
                 let pair = &mut pairs[c.pair as usize];
                 if result.column {
                     let n = pair.manifolds[c.manifold as usize].normal;
-                    let (_, lower) = upper_lower(s.gravity, n, c.body_a, c.body_b);
-                    if let Some(&body) = handles.get(lower as usize).filter(|_| lower != 0) {
-                        supports.column_rests_on(body);
-                    }
+                    let (upper, lower) = upper_lower(s.gravity, n, c.body_a, c.body_b);
+                    let arena = |b: u32| handles.get(b as usize).filter(|_| b != 0).copied();
+                    supports.column_face(arena(upper), arena(lower));
                 }
                 let m = &mut pair.manifolds[c.manifold as usize];
                 let count = usize::from(c.count);

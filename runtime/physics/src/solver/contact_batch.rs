@@ -209,11 +209,16 @@ pub const COLUMN_STIFFNESS: f32 = 1.0;
 /// the caller checks that the budget set the stiffness): larger bodies' faces, and a
 /// ground face at its base stiffness, are left as they were (the ground face of a 20-box
 /// stack taken for one cost the stack 30 %, and every such face taken for one put the
-/// 20-row pyramid's bottom row into columns and cost it 1.8 times as much). The one
-/// exception is the base of a column: a face at the base rate under a body a column face
-/// rests on (`ColumnSupports::carries_column`, as of the last step). Left out, a column
-/// levelled and solved as a whole rocked on it: three 1 cm cubes, every other one 20 %
-/// aside with friction, walked 57 % of a cube within 10 s at 60 Hz × 4.
+/// 20-row pyramid's bottom row into columns and cost it 1.8 times as much). Two exceptions
+/// are the caller's, both as of the last step. The base of a column: a face at the base
+/// rate under a body a column face rests on (`ColumnSupports::carries_column`). Left out, a
+/// column levelled and solved as a whole rocked on it: three 1 cm cubes, every other one
+/// 20 % aside with friction, walked 57 % of a cube within 10 s at 60 Hz × 4. And the
+/// column going on up: a face carrying more than the body on it, on a body that rests on a
+/// column face (`ColumnSupports::rests_on_column`). Left out, the soft faces above a stiff
+/// column leaned on it: ten 1 m cubes, every other one aside, drifted 45–70 % of a cube at
+/// 30 Hz × 2, and a stack of twenty 1 m boxes at 30 Hz × 2 collapsed (91 m; now 8 cm, at
+/// 0.19 ms a step instead of 0.09).
 #[must_use]
 #[inline]
 pub fn column_face(carried: f32, hertz: f32, h: f32) -> bool {
@@ -274,6 +279,62 @@ pub fn column_rest_speed(budget: f32, hertz: f32, g: f32, dt: f32) -> f32 {
 pub fn levelled_for_load(load_ratio: f32, hertz: f32, size: f32, g: f32) -> bool {
     let limit = TILT_LEVEL_FRACTION * 2.0 * std::f32::consts::PI * hertz;
     g > 0.0 && load_ratio > 0.0 && load_ratio * load_ratio * 2.0 * g > limit * limit * size
+}
+
+/// The squared length, in bodies, of the longest column of equal bodies that soft faces hold
+/// upright, per unit of `ω²·size / (g·ratio)` of its faces (see [`chain_level_share`]).
+/// From the chain's stiffness matrix: `n` rigid blocks of height `s` on tilt springs
+/// `k_i` under the weight above them, faces at `k_i/(W_i·s) = c` (each face stiffened for
+/// its own load, as the depth budget does) lose their last stable mode at `n² ≈ 5.5·c`
+/// (fitted from `c` = 5 to 200), and `k/(W·s) = ω²·s / (4·g·ratio)` for a face as wide as
+/// the bodies are high.
+pub const CHAIN_CRITICAL: f32 = 5.5 / 4.0;
+
+/// How far inside its critical length ([`CHAIN_CRITICAL`]) a column's faces are made to
+/// hold it. Bounded `[1, ∞)`: the chain's sum leaves out the offsets of a zig-zag column,
+/// the damping and the iterations. Of the 63 zig-zag columns with friction of
+/// `examples/offset_stacks.rs` in the physics bench (ten high at most), at 4 five and three
+/// drifted past 1 % of a cube after settling at 60 Hz × 4 and 120 Hz × 4 (all ten-high, at
+/// most 4.5 % and 5.6 %; rapier 12 and 11, up to 295 %); at 1.25 one fell at each; at 10
+/// five-high columns, levelled past need, drifted 2–15 %.
+pub const CHAIN_MARGIN: f32 = 4.0;
+
+/// How much of the leak of a face with friction in a column `length` bodies long (the
+/// bodies resting on one face each, `ColumnSupports::column_length`) is the patch's mean
+/// impulse, so that the column stands: none where the chain of its faces, soft in tilt, is
+/// within [`CHAIN_MARGIN`] of holding it ([`CHAIN_CRITICAL`]), else the share that makes the
+/// face as much stiffer in tilt as it needs (a share `s` stiffens it `1 / (1 − s)` times),
+/// up to [`LEVEL_SHARE`] and to what one iteration a substep converges (`h·ω` of the face's
+/// tilt stiffness within `COLUMN_STIFFNESS`; uncapped, a stack of twenty 1 m boxes at
+/// 60 Hz × 2 fell, 3.1 m instead of 7 mm).
+///
+/// [`levelled_for_load`] asks whether one face holds the bodies above it; in a column the
+/// faces below and above it tilt too, and the chain is weaker than each of its links: ten
+/// equal cubes of 5–30 cm, every other one 10–30 % aside, whose faces the depth budget
+/// stiffens (a face's tilt stiffness grows with its load), were levelled for load at the
+/// lower four faces only and leaned over within 10 s at 60 Hz × 4 and 120 Hz × 4 (four and
+/// three of 27). Never without gravity.
+#[must_use]
+#[inline]
+pub fn chain_level_share(
+    length: f32,
+    load_ratio: f32,
+    hertz: f32,
+    size: f32,
+    g: f32,
+    h: f32,
+) -> f32 {
+    let omega = 2.0 * std::f32::consts::PI * hertz;
+    let held = CHAIN_CRITICAL * omega * omega * size;
+    let needed = CHAIN_MARGIN * length * length * load_ratio * g;
+    if g <= 0.0 || load_ratio <= 0.0 || needed <= held {
+        return 0.0;
+    }
+    let converged = 1.0 - (h * omega / COLUMN_STIFFNESS).powi(2);
+    (1.0 - held / needed)
+        .min(LEVEL_SHARE)
+        .min(converged)
+        .max(0.0)
 }
 
 /// The lanes whose face [`ManifoldRows::level_patch`] levelled: their points' rows leak the
