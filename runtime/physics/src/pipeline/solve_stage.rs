@@ -15,8 +15,8 @@ use crate::pipeline::jointed_masses::JointedMasses;
 use crate::rigid_body::mask_mat;
 use crate::solver::body_state::BodyState;
 use crate::solver::contact_batch::{
-    chain_level_share, column_face, column_rest_speed, levelled_for_load, Jitter,
-    COLUMN_LOAD_RATIO, COLUMN_SETTLE_STEPS, LEVEL_MAX_FRICTION, LEVEL_SHARE, LOADED_LEVEL_SHARE,
+    chain_level_share, column_face, column_level_share, column_rest_speed, levelled_for_load,
+    Jitter, COLUMN_LOAD_RATIO, COLUMN_SETTLE_STEPS, LEVEL_MAX_FRICTION, LOADED_LEVEL_SHARE,
 };
 use crate::solver::contact_constraint::{
     prepare, touching_distance, ContactConstraint, FrictionPart, ManifoldRef, NormalBlock,
@@ -676,7 +676,9 @@ impl PhysicsWorld {
                 0.0
             };
             c.load_level_share = if c.column {
-                LEVEL_SHARE
+                let length =
+                    supports.column_length(upper, manifolds, pairs, s.gravity, states.len());
+                column_level_share(f32::from(length), ratio, final_hz, pair.size, g, h)
             } else if c.block.patch
                 && g > 0.0
                 && c.friction.friction >= LEVEL_MAX_FRICTION

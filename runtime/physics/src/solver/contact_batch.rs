@@ -306,7 +306,8 @@ pub const CHAIN_MARGIN: f32 = 4.0;
 /// face as much stiffer in tilt as it needs (a share `s` stiffens it `1 / (1 − s)` times),
 /// up to [`LEVEL_SHARE`] and to what one iteration a substep converges (`h·ω` of the face's
 /// tilt stiffness within `COLUMN_STIFFNESS`; uncapped, a stack of twenty 1 m boxes at
-/// 60 Hz × 2 fell, 3.1 m instead of 7 mm).
+/// 60 Hz × 2 fell, 3.1 m instead of 7 mm). A column face, solved as a whole, has its own
+/// ([`column_level_share`]).
 ///
 /// [`levelled_for_load`] asks whether one face holds the bodies above it; in a column the
 /// faces below and above it tilt too, and the chain is weaker than each of its links: ten
@@ -324,17 +325,65 @@ pub fn chain_level_share(
     g: f32,
     h: f32,
 ) -> f32 {
+    let need = chain_need(length, load_ratio, hertz, size, g);
+    if need <= 0.0 {
+        return 0.0;
+    }
+    let omega = 2.0 * std::f32::consts::PI * hertz;
+    let converged = 1.0 - (h * omega / COLUMN_STIFFNESS).powi(2);
+    need.min(LEVEL_SHARE).min(converged).max(0.0)
+}
+
+/// The most of a column face's leak that is the patch's mean impulse (see
+/// [`column_level_share`]). Bounded `(LEVEL_SHARE, 1)`: at 1 a face has no leak in tilt at
+/// all (see [`LEVEL_SHARE`]); at 0.9 forty 1 m cubes at 30 Hz × 2 leaned half a metre
+/// within 35 s; at 0.95 and 0.99 they stand.
+pub const COLUMN_MAX_LEVEL_SHARE: f32 = 0.95;
+
+/// `h·ω` of a column face's stiffness in tilt once levelled (a share `s` stiffens it
+/// `1 / (1 − s)` times, `h·ω` by `1 / √(1 − s)`) past which it is levelled no further than
+/// [`LEVEL_SHARE`] (see [`column_level_share`]). Bounded `(0, ∞)`: at 12 forty 1 m cubes at
+/// 30 Hz × 2 fell (their ground face, at `h·ω` π, levelled at most 0.93); with no bound ten
+/// 1 cm cubes at 30 Hz × 2 (faces at `h·ω` 12.6, levelled 0.83–0.89) fell within 10 s; from
+/// 16 to 20 both stand.
+pub const COLUMN_MAX_TILT_STIFFNESS: f32 = 16.0;
+
+/// The share of a column face's leak that is the patch's mean impulse at a stiffness of
+/// `hertz` (once stiffened as a column face): [`LEVEL_SHARE`], or more where the chain of
+/// its column, `length` bodies long, needs it (as [`chain_level_share`] has it), up to
+/// [`COLUMN_MAX_LEVEL_SHARE`] and while its tilt stays within
+/// [`COLUMN_MAX_TILT_STIFFNESS`]. The column is solved as a whole (`ColumnSolve`), so
+/// unlike a face in no column its share is not held to what one iteration converges. At
+/// [`LEVEL_SHARE`] alone, a stack of twenty 1 m boxes at 30 Hz × 2, every face a column
+/// face, leaned over in a tilt that doubled every 2 s and fell within 40 s (its faces,
+/// stiffened for their loads, each at `k/(W·s)` ≈ 50: a chain of about 17 holds).
+#[must_use]
+#[inline]
+pub fn column_level_share(
+    length: f32,
+    load_ratio: f32,
+    hertz: f32,
+    size: f32,
+    g: f32,
+    h: f32,
+) -> f32 {
+    let tilt = 1.0 - (h * 2.0 * std::f32::consts::PI * hertz / COLUMN_MAX_TILT_STIFFNESS).powi(2);
+    chain_need(length, load_ratio, hertz, size, g)
+        .min(COLUMN_MAX_LEVEL_SHARE)
+        .min(tilt)
+        .max(LEVEL_SHARE)
+}
+
+/// The share of a face's leak its column's chain needs levelled (`1 − held/needed`, see
+/// [`chain_level_share`]), 0 where it holds unlevelled or without gravity.
+fn chain_need(length: f32, load_ratio: f32, hertz: f32, size: f32, g: f32) -> f32 {
     let omega = 2.0 * std::f32::consts::PI * hertz;
     let held = CHAIN_CRITICAL * omega * omega * size;
     let needed = CHAIN_MARGIN * length * length * load_ratio * g;
     if g <= 0.0 || load_ratio <= 0.0 || needed <= held {
         return 0.0;
     }
-    let converged = 1.0 - (h * omega / COLUMN_STIFFNESS).powi(2);
-    (1.0 - held / needed)
-        .min(LEVEL_SHARE)
-        .min(converged)
-        .max(0.0)
+    1.0 - held / needed
 }
 
 /// The lanes whose face [`ManifoldRows::level_patch`] levelled: their points' rows leak the
