@@ -4,10 +4,12 @@
 //! precise (120 Hz × 4) settings. A chaotic scene (a poured pile, a collapsing pyramid) has
 //! a figure that is one sample of a spread; the sweep reports seed 0.
 //!
-//! `cargo run --release -p onyx-physics-bench --example spread -- poured_spheres [seeds]`
+//! `cargo run --release -p onyx-physics-bench --example spread -- poured_spheres [seeds] [all]`
+//! (`all`: fast too).
 
 use onyx_physics::glam::Quat;
 use onyx_physics::glam::Vec3;
+use onyx_physics::PhysicsPreset;
 use onyx_physics_bench::engine::{BodyId, BodySpec, Engine, EngineKind, StepSettings};
 use onyx_physics_bench::joint_spec::JointSpec;
 use onyx_physics_bench::scenes::{all, Size};
@@ -87,8 +89,14 @@ fn main() -> anyhow::Result<()> {
         .find(|s| s.name() == name)
         .ok_or_else(|| anyhow::anyhow!("unknown scene {name:?}"))?;
     println!("{name}: {}", scene.metric());
-    for (label, hz) in [("balanced", 60.0), ("precise", 120.0)] {
-        let s = StepSettings { hz, iterations: 4 };
+    // `all` as the third argument adds fast (30 Hz × 2), whose collapses are the widest.
+    let presets: &[PhysicsPreset] = if args.get(3).is_some_and(|a| a == "all") {
+        &PhysicsPreset::ALL
+    } else {
+        &[PhysicsPreset::Balanced, PhysicsPreset::Precise]
+    };
+    for &preset in presets {
+        let (label, s) = (preset.to_string(), StepSettings::of_preset(preset));
         for engine in EngineKind::ALL {
             let figures: Vec<f64> = (0..seeds)
                 .map(|seed| {

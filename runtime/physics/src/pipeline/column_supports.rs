@@ -17,10 +17,10 @@ pub const SUPPORT_MIN_COS: f32 = std::f32::consts::FRAC_1_SQRT_2;
 /// gravity) it is the upper body of; a speculative face two cubes up does not count.
 ///
 /// Asked by a face the depth budget stiffens past `COLUMN_STIFFNESS` (or one at the base
-/// rate under or on a column, `Self::carries_column`, `Self::rests_on_column`), and by
-/// every face with friction whose chain may need levelling (`chain_level_share`): counted
-/// every step wherever a body rests on one face with friction (the 20-row pyramid's
-/// bottom row on the ground does, about 1 % of its step).
+/// rate under a column, `Self::carries_column`), and by every face with friction whose
+/// chain may need levelling (`chain_level_share`): counted every step wherever a body rests
+/// on one face with friction (the 20-row pyramid's bottom row on the ground does, about 1 %
+/// of its step).
 #[derive(Debug, Default)]
 pub(crate) struct ColumnSupports {
     counts: Vec<u8>,
@@ -35,16 +35,10 @@ pub(crate) struct ColumnSupports {
     /// one face each up the column, and those it rests on so down to the base (see
     /// [`Self::column_length`]); empty until first asked.
     column_lengths: Vec<u16>,
-    /// Per body (arena index), whether a column face rested on it ([`CARRIES`]) and whether
-    /// it rested on a column face ([`RESTS`]) at the end of the last step (see
-    /// [`Self::carries_column`] and [`Self::rests_on_column`]).
-    columns_on: Vec<u8>,
+    /// Per body (arena index), whether a column face rested on it at the end of the last
+    /// step (see [`Self::carries_column`]).
+    columns_on: Vec<bool>,
 }
-
-/// A column face rested on the body (see [`ColumnSupports::carries_column`]).
-const CARRIES: u8 = 1;
-/// The body rested on a column face (see [`ColumnSupports::rests_on_column`]).
-const RESTS: u8 = 2;
 
 /// Longest column [`ColumnSupports::column_mass`] walks down from a body: the bound of its
 /// cost, far past any column one face can carry within its budget.
@@ -147,39 +141,24 @@ impl ColumnSupports {
         .take(MAX_COLUMN_WALK)
     }
 
-    /// Forgets which bodies carried or rested on a column face (before the step's are
-    /// marked).
+    /// Forgets which bodies carried a column face (before the step's are marked).
     pub fn forget_columns(&mut self) {
-        self.columns_on.fill(0);
+        self.columns_on.fill(false);
     }
 
-    /// Marks a column face between the bodies at arena indices `upper` and `lower` (`None`
-    /// for the static body).
-    pub fn column_face(&mut self, upper: Option<u32>, lower: Option<u32>) {
-        for (body, flag) in [(upper, RESTS), (lower, CARRIES)] {
-            if let Some(i) = body.map(|b| b as usize) {
-                if self.columns_on.len() <= i {
-                    self.columns_on.resize(i + 1, 0);
-                }
-                self.columns_on[i] |= flag;
-            }
+    /// Marks the body at arena index `body` as carrying a column face.
+    pub fn column_rests_on(&mut self, body: u32) {
+        let i = body as usize;
+        if self.columns_on.len() <= i {
+            self.columns_on.resize(i + 1, false);
         }
+        self.columns_on[i] = true;
     }
 
     /// Whether a column face rested on the body at arena index `body` at the end of the last
     /// step: the face it rests on is the base of that column.
     pub fn carries_column(&self, body: u32) -> bool {
-        self.flags(body) & CARRIES != 0
-    }
-
-    /// Whether the body at arena index `body` rested on a column face at the end of the last
-    /// step: a face it carries goes on with that column up.
-    pub fn rests_on_column(&self, body: u32) -> bool {
-        self.flags(body) & RESTS != 0
-    }
-
-    fn flags(&self, body: u32) -> u8 {
-        self.columns_on.get(body as usize).copied().unwrap_or(0)
+        self.columns_on.get(body as usize).copied().unwrap_or(false)
     }
 
     /// Whether solver body `body` rests on one face at most (the static body, index 0,

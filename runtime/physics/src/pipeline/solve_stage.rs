@@ -15,8 +15,8 @@ use crate::pipeline::jointed_masses::JointedMasses;
 use crate::rigid_body::mask_mat;
 use crate::solver::body_state::BodyState;
 use crate::solver::contact_batch::{
-    chain_level_share, column_face, column_level_share, column_rest_speed, levelled_for_load,
-    Jitter, COLUMN_LOAD_RATIO, COLUMN_SETTLE_STEPS, LEVEL_MAX_FRICTION, LOADED_LEVEL_SHARE,
+    chain_level_share, chain_needs_column, column_face, column_level_share, column_rest_speed,
+    levelled_for_load, Jitter, COLUMN_SETTLE_STEPS, LEVEL_MAX_FRICTION, LOADED_LEVEL_SHARE,
 };
 use crate::solver::contact_constraint::{
     prepare, touching_distance, ContactConstraint, FrictionPart, ManifoldRef, NormalBlock,
@@ -25,7 +25,7 @@ use crate::solver::contact_constraint::{
 use crate::solver::noise::matrix_without_noise;
 use crate::solver::restitution::{bounce_velocity, held_velocity};
 use crate::solver::softness::LOAD_MEMORY_HALF_LIFE;
-use crate::solver::solve::{solve_substeps, SolveParams};
+use crate::solver::solve::{column_passes, solve_substeps, SolveParams};
 use crate::solver::solver_body::SolverBody;
 use crate::solver::Softness;
 
@@ -355,6 +355,9 @@ impl PhysicsWorld {
             &mut self.supports,
             &self.solver_handles,
         );
+        // `h·ω` of the stiffest column face its depth budget stiffened: how many column
+        // passes the step needs (`column_passes`).
+        let mut stiffest_column = 0.0f32;
         let mut prepare_one = |r: &ManifoldRef,
                                out: &mut PreparedManifold,
                                overloads: &mut Vec<Overload>| {
@@ -623,17 +626,28 @@ impl PhysicsWorld {
                 }
             };
             // Stiff past a radian a substep: set so by its depth budget, or, at the base
-            // rate, under a column (its base face); or on a column (see `column_face`).
+            // rate, under a column (its base face); or a face with friction whose column's
+            // chain needs more levelling than the iterations converge (see `column_face`).
             let arena = |b: u32| handles.get(b as usize).filter(|_| b != 0);
+            // Stiffened by its depth budget past the base rate.
+            let budgeted = used_hz > load_hz;
+            let stiff = column_face(column_load(), used_hz, h)
+                && (budgeted || arena(upper).is_some_and(|&b| supports.carries_column(b)));
             c.column = c.block.patch
                 && g > 0.0
-                && (column_face(column_load(), used_hz, h)
-                    && (used_hz > load_hz
-                        || arena(upper).is_some_and(|&b| supports.carries_column(b)))
-                    || column_load() > COLUMN_LOAD_RATIO
-                        && arena(lower).is_some_and(|&b| supports.rests_on_column(b)))
                 && !carries_hidden
                 && c.mass_scale == [1.0; 2]
+                && (stiff
+                    || c.friction.friction >= LEVEL_MAX_FRICTION && {
+                        let length = supports.column_length(
+                            upper,
+                            manifolds,
+                            pairs,
+                            s.gravity,
+                            states.len(),
+                        );
+                        chain_needs_column(f32::from(length), ratio, used_hz, pair.size, g, h)
+                    })
                 && supports.single(upper, manifolds, pairs, s.gravity)
                 && supports.single(lower, manifolds, pairs, s.gravity)
                 && resting(c);
@@ -647,6 +661,9 @@ impl PhysicsWorld {
                 (softness, used_hz)
             };
             c.softness = softness;
+            if c.column && stiff && budgeted {
+                stiffest_column = stiffest_column.max(h * 2.0 * std::f32::consts::PI * final_hz);
+            }
             // Deeper than twice the budget even at the stiffest contact, under the load of
             // this step (not the remembered one, which an impact fills for several steps):
             // a candidate, named once it is one `OVERLOAD_SUSTAIN_STEPS` running.
@@ -710,6 +727,7 @@ impl PhysicsWorld {
             restitution: bouncy,
             max_linear_speed: s.max_linear_speed,
             max_angular_speed: s.max_angular_speed,
+            column_passes: column_passes(stiffest_column),
             jitter: Jitter {
                 dt: s.dt,
                 gravity: s.gravity.length(),
@@ -747,9 +765,10 @@ impl PhysicsWorld {
                 let pair = &mut pairs[c.pair as usize];
                 if result.column {
                     let n = pair.manifolds[c.manifold as usize].normal;
-                    let (upper, lower) = upper_lower(s.gravity, n, c.body_a, c.body_b);
-                    let arena = |b: u32| handles.get(b as usize).filter(|_| b != 0).copied();
-                    supports.column_face(arena(upper), arena(lower));
+                    let (_, lower) = upper_lower(s.gravity, n, c.body_a, c.body_b);
+                    if let Some(&body) = handles.get(lower as usize).filter(|_| lower != 0) {
+                        supports.column_rests_on(body);
+                    }
                 }
                 let m = &mut pair.manifolds[c.manifold as usize];
                 let count = usize::from(c.count);

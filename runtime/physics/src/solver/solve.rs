@@ -5,7 +5,7 @@ use glam::{Quat, Vec3, Vec3A};
 
 use super::batching::ContactBatches;
 use super::body_state::BodyState;
-use super::contact_batch::{Jitter, Pass};
+use super::contact_batch::{Jitter, Pass, COLUMN_STIFFNESS};
 use super::elastic_energy::ElasticEnergy;
 use super::free_rotation::free_rotation_step;
 use super::joint_constraint::{JointConstraint, Rows};
@@ -37,6 +37,25 @@ pub const RESTITUTION_TOLERANCE: f32 = 1e-4;
 /// system, and only columns have them.
 pub const COLUMN_PASSES: u32 = 16;
 
+/// Passes over the columns a substep where no column face is stiffened by its depth budget
+/// past `contact_batch::COLUMN_STIFFNESS` (faces taken for a column for their chain,
+/// `contact_batch::chain_needs_column`, and the base faces under them). Such a column
+/// converges in one: twenty 1 m boxes at 60 Hz × 4 stand from one pass, and cost 0.23 ms a
+/// step with all [`COLUMN_PASSES`], 0.14 ms with two.
+pub const SOFT_COLUMN_PASSES: u32 = 2;
+
+/// Passes over the columns a substep where the stiffest column face its depth budget
+/// stiffened is at `h·ω` = `stiffness` (0 for none): [`COLUMN_PASSES`], or
+/// [`SOFT_COLUMN_PASSES`] where no such face is stiff.
+#[must_use]
+pub fn column_passes(stiffness: f32) -> u32 {
+    if stiffness > COLUMN_STIFFNESS {
+        COLUMN_PASSES
+    } else {
+        SOFT_COLUMN_PASSES
+    }
+}
+
 /// Parameters of one solver run (derived from `PhysicsSettings`).
 #[derive(Clone, Copy, Debug)]
 pub(crate) struct SolveParams {
@@ -49,6 +68,8 @@ pub(crate) struct SolveParams {
     pub restitution: bool,
     pub max_linear_speed: f32,
     pub max_angular_speed: f32,
+    /// Passes over the columns a substep (see [`column_passes`]).
+    pub column_passes: u32,
     /// Below it a restitution impulse is a resting contact's, not an impact's.
     pub jitter: Jitter,
 }
@@ -104,7 +125,7 @@ pub(crate) fn solve_substeps(
             batches.solve(states, solve_pass);
         }
         if columns {
-            for _ in 0..COLUMN_PASSES {
+            for _ in 0..p.column_passes {
                 batches.correct_columns(states, solve_pass);
                 batches.solve_columns(states, solve_pass);
             }
