@@ -912,7 +912,7 @@ fn short_zig_zag_columns_with_friction_hold_at_balanced_and_precise() {
 /// 10 % of its size sideways after settling. Each face is stiff enough in tilt for the
 /// bodies above it, but the chain of ten soft faces is weaker than each of its links: levelled
 /// for their loads alone they leaned over, 3 to 9 cubes aside within 10 s. The faces of a
-/// column are levelled for its length (see `chain_level_share`).
+/// column are levelled for its length (see `ChainFace::level_share`).
 #[test]
 fn tall_zig_zag_columns_with_friction_stand_at_balanced_and_precise() {
     let mut failures = Vec::new();
@@ -934,7 +934,7 @@ fn tall_zig_zag_columns_with_friction_stand_at_balanced_and_precise() {
 /// At fast, ten 1 m cubes, every other one 10–30 % aside, move less than 10 % of a cube
 /// after settling (19–940 % while the soft faces above the budget-stiffened ones were left
 /// to the iterations: their chain needs more levelling than those converge, and they are
-/// column faces, see `chain_needs_column`).
+/// column faces, see `ChainFace::needs_column`).
 #[test]
 fn tall_zig_zag_columns_of_1_m_cubes_stand_at_fast() {
     let mut failures = Vec::new();
@@ -955,7 +955,7 @@ fn tall_zig_zag_columns_of_1_m_cubes_stand_at_fast() {
 /// for its own load, held about 17 boxes: at fast twenty 1 m boxes leaned over in a tilt
 /// that doubled every 2 s, at balanced they fell within 50 s, and at precise twenty 10 cm
 /// and 30 cm boxes fell within 10 s and 30 s. Their faces are levelled for the column's
-/// length and solved with it as a whole (see `chain_needs_column`, `column_level_share`).
+/// length and solved with it as a whole (see `ChainFace::needs_column`, `ChainFace::column_level_share`).
 #[test]
 fn tall_stacks_stand_at_every_preset() {
     let mut failures = Vec::new();

@@ -18,7 +18,7 @@ pub const SUPPORT_MIN_COS: f32 = std::f32::consts::FRAC_1_SQRT_2;
 ///
 /// Asked by a face the depth budget stiffens past `COLUMN_STIFFNESS` (or one at the base
 /// rate under a column, `Self::carries_column`), and by every face with friction whose
-/// chain may need levelling (`chain_level_share`): counted every step wherever a body rests
+/// chain may need levelling (`ChainFace::level_share`): counted every step wherever a body rests
 /// on one face with friction (the 20-row pyramid's bottom row on the ground does, about 1 %
 /// of its step).
 #[derive(Debug, Default)]

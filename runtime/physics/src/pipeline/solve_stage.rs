@@ -2,6 +2,7 @@
 
 use glam::{Vec3, Vec3A};
 
+use super::column_supports::ColumnSupports;
 use super::heavy_on_light::{scaling_onset, support_mass_scale, upper_lower};
 use super::resting_accelerations::RestingAccelerations;
 use crate::body_type::BodyType;
@@ -14,9 +15,10 @@ use crate::physics_world::SolverSlot;
 use crate::pipeline::jointed_masses::JointedMasses;
 use crate::rigid_body::mask_mat;
 use crate::solver::body_state::BodyState;
+use crate::solver::column_chain::ChainFace;
 use crate::solver::contact_batch::{
-    chain_level_share, chain_needs_column, column_face, column_level_share, column_rest_speed,
-    levelled_for_load, Jitter, COLUMN_SETTLE_STEPS, LEVEL_MAX_FRICTION, LOADED_LEVEL_SHARE,
+    column_face, column_rest_speed, levelled_for_load, Jitter, COLUMN_SETTLE_STEPS,
+    LEVEL_MAX_FRICTION, LOADED_LEVEL_SHARE,
 };
 use crate::solver::contact_constraint::{
     prepare, touching_distance, ContactConstraint, FrictionPart, ManifoldRef, NormalBlock,
@@ -625,6 +627,21 @@ impl PhysicsWorld {
                     0.0
                 }
             };
+            // The face in the column its bodies make, at a stiffness.
+            let chain = |supports: &mut ColumnSupports, hertz: f32| ChainFace {
+                length: f32::from(supports.column_length(
+                    upper,
+                    manifolds,
+                    pairs,
+                    s.gravity,
+                    states.len(),
+                )),
+                load_ratio: ratio,
+                hertz,
+                size: pair.size,
+                g,
+                h,
+            };
             // Stiff past a radian a substep: set so by its depth budget, or, at the base
             // rate, under a column (its base face); or a face with friction whose column's
             // chain needs more levelling than the iterations converge (see `column_face`).
@@ -638,16 +655,8 @@ impl PhysicsWorld {
                 && !carries_hidden
                 && c.mass_scale == [1.0; 2]
                 && (stiff
-                    || c.friction.friction >= LEVEL_MAX_FRICTION && {
-                        let length = supports.column_length(
-                            upper,
-                            manifolds,
-                            pairs,
-                            s.gravity,
-                            states.len(),
-                        );
-                        chain_needs_column(f32::from(length), ratio, used_hz, pair.size, g, h)
-                    })
+                    || c.friction.friction >= LEVEL_MAX_FRICTION
+                        && chain(supports, used_hz).needs_column())
                 && supports.single(upper, manifolds, pairs, s.gravity)
                 && supports.single(lower, manifolds, pairs, s.gravity)
                 && resting(c);
@@ -693,19 +702,14 @@ impl PhysicsWorld {
                 0.0
             };
             c.load_level_share = if c.column {
-                let length =
-                    supports.column_length(upper, manifolds, pairs, s.gravity, states.len());
-                column_level_share(f32::from(length), ratio, final_hz, pair.size, g, h)
+                chain(supports, final_hz).column_level_share()
             } else if c.block.patch
                 && g > 0.0
                 && c.friction.friction >= LEVEL_MAX_FRICTION
                 && supports.single(upper, manifolds, pairs, s.gravity)
                 && supports.single(lower, manifolds, pairs, s.gravity)
             {
-                let length =
-                    supports.column_length(upper, manifolds, pairs, s.gravity, states.len());
-                let chain = chain_level_share(f32::from(length), ratio, used_hz, pair.size, g, h);
-                for_load.max(chain)
+                for_load.max(chain(supports, used_hz).level_share())
             } else {
                 for_load
             };

@@ -215,7 +215,7 @@ pub const COLUMN_STIFFNESS: f32 = 1.0;
 /// levelled and solved as a whole rocked on it: three 1 cm cubes, every other one 20 %
 /// aside with friction, walked 57 % of a cube within 10 s at 60 Hz × 4. A face whose
 /// column's chain needs more levelling than the iterations converge is a column face too
-/// (see [`chain_needs_column`]).
+/// (see `column_chain::ChainFace::needs_column`).
 #[must_use]
 #[inline]
 pub fn column_face(carried: f32, hertz: f32, h: f32) -> bool {
@@ -276,138 +276,6 @@ pub fn column_rest_speed(budget: f32, hertz: f32, g: f32, dt: f32) -> f32 {
 pub fn levelled_for_load(load_ratio: f32, hertz: f32, size: f32, g: f32) -> bool {
     let limit = TILT_LEVEL_FRACTION * 2.0 * std::f32::consts::PI * hertz;
     g > 0.0 && load_ratio > 0.0 && load_ratio * load_ratio * 2.0 * g > limit * limit * size
-}
-
-/// The squared length, in bodies, of the longest column of equal bodies that soft faces hold
-/// upright, per unit of `ω²·size / (g·ratio)` of its faces (see [`chain_level_share`]).
-/// From the chain's stiffness matrix: `n` rigid blocks of height `s` on tilt springs
-/// `k_i` under the weight above them, faces at `k_i/(W_i·s) = c` (each face stiffened for
-/// its own load, as the depth budget does) lose their last stable mode at `n² ≈ 5.5·c`
-/// (fitted from `c` = 5 to 200), and `k/(W·s) = ω²·s / (4·g·ratio)` for a face as wide as
-/// the bodies are high.
-pub const CHAIN_CRITICAL: f32 = 5.5 / 4.0;
-
-/// How far inside its critical length ([`CHAIN_CRITICAL`]) a column's faces are made to
-/// hold it. Bounded `[1, ∞)`: the chain's sum leaves out the offsets of a zig-zag column,
-/// the damping and the iterations. Of the 63 zig-zag columns with friction of
-/// `examples/offset_stacks.rs` in the physics bench (5 mm–1 m, ten high at most), at 6 none
-/// and one drifted past 1 % of a cube after settling at 60 Hz × 4 and 120 Hz × 4 (1.3 %;
-/// rapier 12 and 11, up to 295 %); at 1.5 and 2 ten-high columns fell, at 4 one drifted at
-/// each (1.4 % and 1.7 %), at 16 and 32 columns of 1 cm cubes, levelled past need, fell.
-/// At 8 and 12 none drifted at either, and at 30 Hz × 2 two more of the random stacks of
-/// `tests/stacking.rs` stood with friction, but the frictionless twin of one of them, which
-/// the test then holds to, slides apart at 30 Hz × 2 (a weakness of frictionless faces
-/// there, open).
-pub const CHAIN_MARGIN: f32 = 6.0;
-
-/// How much of the leak of a face with friction in a column `length` bodies long (the
-/// bodies resting on one face each, `ColumnSupports::column_length`) is the patch's mean
-/// impulse, so that the column stands: none where the chain of its faces, soft in tilt, is
-/// within [`CHAIN_MARGIN`] of holding it ([`CHAIN_CRITICAL`]), else the share that makes the
-/// face as much stiffer in tilt as it needs (a share `s` stiffens it `1 / (1 − s)` times),
-/// up to [`LEVEL_SHARE`] and to what one iteration a substep converges (`h·ω` of the face's
-/// tilt stiffness within `COLUMN_STIFFNESS`; uncapped, a stack of twenty 1 m boxes at
-/// 60 Hz × 2 fell, 3.1 m instead of 7 mm). A column face, solved as a whole, has its own
-/// ([`column_level_share`]).
-///
-/// [`levelled_for_load`] asks whether one face holds the bodies above it; in a column the
-/// faces below and above it tilt too, and the chain is weaker than each of its links: ten
-/// equal cubes of 5–30 cm, every other one 10–30 % aside, whose faces the depth budget
-/// stiffens (a face's tilt stiffness grows with its load), were levelled for load at the
-/// lower four faces only and leaned over within 10 s at 60 Hz × 4 and 120 Hz × 4 (four and
-/// three of 27). Never without gravity.
-#[must_use]
-#[inline]
-pub fn chain_level_share(
-    length: f32,
-    load_ratio: f32,
-    hertz: f32,
-    size: f32,
-    g: f32,
-    h: f32,
-) -> f32 {
-    let need = chain_need(length, load_ratio, hertz, size, g);
-    if need <= 0.0 {
-        return 0.0;
-    }
-    let omega = 2.0 * std::f32::consts::PI * hertz;
-    let converged = 1.0 - (h * omega / COLUMN_STIFFNESS).powi(2);
-    need.min(LEVEL_SHARE).min(converged).max(0.0)
-}
-
-/// Whether the chain of a face with friction in a column `length` bodies long needs more
-/// levelling than one iteration a substep converges (see [`chain_level_share`]): then it is
-/// a column face, levelled as its chain needs and solved with its column as a whole
-/// ([`column_level_share`], `ColumnSolve`). Levelled only as far as the iteration converges,
-/// twenty 1 m boxes at 60 Hz × 4 fell within 50 s, and twenty 10 cm and 30 cm cubes at
-/// 120 Hz × 4 within 10 s and 30 s (rapier holds them, rocking a few % of a cube); as
-/// column faces all stand (`examples/tall_stack.rs` in the physics bench).
-#[must_use]
-#[inline]
-pub fn chain_needs_column(
-    length: f32,
-    load_ratio: f32,
-    hertz: f32,
-    size: f32,
-    g: f32,
-    h: f32,
-) -> bool {
-    let need = chain_need(length, load_ratio, hertz, size, g);
-    let omega = 2.0 * std::f32::consts::PI * hertz;
-    need > 0.0 && need > (1.0 - (h * omega / COLUMN_STIFFNESS).powi(2)).min(LEVEL_SHARE)
-}
-
-/// The most of a column face's leak that is the patch's mean impulse (see
-/// [`column_level_share`]). Bounded `(LEVEL_SHARE, 1)`: at 1 a face has no leak in tilt at
-/// all (see [`LEVEL_SHARE`]); at 0.9 forty 1 m cubes at 30 Hz × 2 leaned half a metre
-/// within 35 s; at 0.95 and 0.99 they stand.
-pub const COLUMN_MAX_LEVEL_SHARE: f32 = 0.95;
-
-/// `h·ω` of a column face's stiffness in tilt once levelled (a share `s` stiffens it
-/// `1 / (1 − s)` times, `h·ω` by `1 / √(1 − s)`) past which it is levelled no further than
-/// [`LEVEL_SHARE`] (see [`column_level_share`]). Bounded `(0, ∞)`: at 12 forty 1 m cubes at
-/// 30 Hz × 2 fell (their ground face, at `h·ω` π, levelled at most 0.93); with no bound ten
-/// 1 cm cubes at 30 Hz × 2 (faces at `h·ω` 12.6, levelled 0.83–0.89) fell within 10 s; from
-/// 16 to 20 both stand.
-pub const COLUMN_MAX_TILT_STIFFNESS: f32 = 16.0;
-
-/// The share of a column face's leak that is the patch's mean impulse at a stiffness of
-/// `hertz` (once stiffened as a column face): [`LEVEL_SHARE`], or more where the chain of
-/// its column, `length` bodies long, needs it (as [`chain_level_share`] has it), up to
-/// [`COLUMN_MAX_LEVEL_SHARE`] and while its tilt stays within
-/// [`COLUMN_MAX_TILT_STIFFNESS`]. The column is solved as a whole (`ColumnSolve`), so
-/// unlike a face in no column its share is not held to what one iteration converges. At
-/// [`LEVEL_SHARE`] alone, a stack of twenty 1 m boxes at 30 Hz × 2, every face a column
-/// face, leaned over in a tilt that doubled every 2 s and fell within 40 s (its faces,
-/// stiffened for their loads, each at `k/(W·s)` ≈ 50: a chain of about 17 holds).
-#[must_use]
-#[inline]
-pub fn column_level_share(
-    length: f32,
-    load_ratio: f32,
-    hertz: f32,
-    size: f32,
-    g: f32,
-    h: f32,
-) -> f32 {
-    let stiffness = h * 2.0 * std::f32::consts::PI * hertz;
-    let tilt = 1.0 - (stiffness / COLUMN_MAX_TILT_STIFFNESS).powi(2);
-    chain_need(length, load_ratio, hertz, size, g)
-        .min(COLUMN_MAX_LEVEL_SHARE)
-        .min(tilt)
-        .max(LEVEL_SHARE)
-}
-
-/// The share of a face's leak its column's chain needs levelled (`1 − held/needed`, see
-/// [`chain_level_share`]), 0 where it holds unlevelled or without gravity.
-fn chain_need(length: f32, load_ratio: f32, hertz: f32, size: f32, g: f32) -> f32 {
-    let omega = 2.0 * std::f32::consts::PI * hertz;
-    let held = CHAIN_CRITICAL * omega * omega * size;
-    let needed = CHAIN_MARGIN * length * length * load_ratio * g;
-    if g <= 0.0 || load_ratio <= 0.0 || needed <= held {
-        return 0.0;
-    }
-    1.0 - held / needed
 }
 
 /// The lanes whose face [`ManifoldRows::level_patch`] levelled: their points' rows leak the

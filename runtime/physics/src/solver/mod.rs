@@ -2,6 +2,7 @@
 
 pub(crate) mod batching;
 pub(crate) mod body_state;
+pub(crate) mod column_chain;
 pub(crate) mod column_solve;
 pub(crate) mod contact_batch;
 pub(crate) mod contact_constraint;

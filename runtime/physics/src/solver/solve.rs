@@ -39,7 +39,7 @@ pub const COLUMN_PASSES: u32 = 16;
 
 /// Passes over the columns a substep where no column face is stiffened by its depth budget
 /// past `contact_batch::COLUMN_STIFFNESS` (faces taken for a column for their chain,
-/// `contact_batch::chain_needs_column`, and the base faces under them). Such a column
+/// `column_chain::ChainFace::needs_column`, and the base faces under them). Such a column
 /// converges in one: twenty 1 m boxes at 60 Hz × 4 stand from one pass, and cost 0.23 ms a
 /// step with all [`COLUMN_PASSES`], 0.14 ms with two.
 pub const SOFT_COLUMN_PASSES: u32 = 2;
