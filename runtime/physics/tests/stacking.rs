@@ -878,6 +878,34 @@ fn zig_zag_drift(preset: PhysicsPreset, count: usize, size: f32, offset: f32) ->
     worst
 }
 
+/// The zig-zag columns of `counts` cubes of `sizes`, every other one 10, 20 and 30 % aside,
+/// that move a cube `limit` of its size or more at any of `presets` (see
+/// [`zig_zag_drift`]), each named with how far.
+fn zig_zags_drifting(
+    presets: &[PhysicsPreset],
+    counts: &[usize],
+    sizes: &[f32],
+    limit: f32,
+) -> Vec<String> {
+    let mut failures = Vec::new();
+    for &preset in presets {
+        for &size in sizes {
+            for &count in counts {
+                for offset in [0.1f32, 0.2, 0.3] {
+                    let drift = zig_zag_drift(preset, count, size, offset);
+                    if drift >= limit {
+                        failures.push(format!(
+                            "{preset}, {count} {size} m cubes {offset} aside: moved {drift} \
+                             of a cube"
+                        ));
+                    }
+                }
+            }
+        }
+    }
+    failures
+}
+
 /// Short zig-zag columns of small cubes with friction hold at balanced and precise: three
 /// and five cubes of 5 mm to 2 cm, every other one set aside by 10–30 % of its size,
 /// friction 0.5; no cube moves more than 1 % of its size sideways after settling. Their
@@ -888,22 +916,7 @@ fn zig_zag_drift(preset: PhysicsPreset, count: usize, size: f32, offset: f32) ->
 /// is now the column's base face (see `column_face`).
 #[test]
 fn short_zig_zag_columns_with_friction_hold_at_balanced_and_precise() {
-    let mut failures = Vec::new();
-    for preset in [PhysicsPreset::Balanced, PhysicsPreset::Precise] {
-        for size in [0.005f32, 0.01, 0.02] {
-            for count in [3, 5] {
-                for offset in [0.1f32, 0.2, 0.3] {
-                    let drift = zig_zag_drift(preset, count, size, offset);
-                    if drift >= 0.01 {
-                        failures.push(format!(
-                            "{preset}, {count} {size} m cubes {offset} aside: moved {drift} \
-                             of a cube"
-                        ));
-                    }
-                }
-            }
-        }
-    }
+    let failures = zig_zags_drifting(BALANCED_AND_PRECISE, &[3, 5], &[0.005, 0.01, 0.02], 0.01);
     assert!(failures.is_empty(), "{}", failures.join("\n"));
 }
 
@@ -915,19 +928,7 @@ fn short_zig_zag_columns_with_friction_hold_at_balanced_and_precise() {
 /// column are levelled for its length (see `ChainFace::level_share`).
 #[test]
 fn tall_zig_zag_columns_with_friction_stand_at_balanced_and_precise() {
-    let mut failures = Vec::new();
-    for preset in [PhysicsPreset::Balanced, PhysicsPreset::Precise] {
-        for size in [0.05f32, 0.1, 0.3] {
-            for offset in [0.1f32, 0.2, 0.3] {
-                let drift = zig_zag_drift(preset, 10, size, offset);
-                if drift >= 0.1 {
-                    failures.push(format!(
-                        "{preset}, ten {size} m cubes {offset} aside: moved {drift} of a cube"
-                    ));
-                }
-            }
-        }
-    }
+    let failures = zig_zags_drifting(BALANCED_AND_PRECISE, &[10], &[0.05, 0.1, 0.3], 0.1);
     assert!(failures.is_empty(), "{}", failures.join("\n"));
 }
 
@@ -937,25 +938,18 @@ fn tall_zig_zag_columns_with_friction_stand_at_balanced_and_precise() {
 /// column faces, see `ChainFace::needs_column`).
 #[test]
 fn tall_zig_zag_columns_of_1_m_cubes_stand_at_fast() {
-    let mut failures = Vec::new();
-    for offset in [0.1f32, 0.2, 0.3] {
-        let drift = zig_zag_drift(PhysicsPreset::Fast, 10, 1.0, offset);
-        if drift >= 0.1 {
-            failures.push(format!(
-                "ten 1 m cubes {offset} aside: moved {drift} of a cube"
-            ));
-        }
-    }
+    let failures = zig_zags_drifting(&[PhysicsPreset::Fast], &[10], &[1.0], 0.1);
     assert!(failures.is_empty(), "{}", failures.join("\n"));
 }
 
 /// Tall stacks (friction 0.6) stand at every preset: the top of twenty 10 cm, 30 cm and
 /// 1 m boxes (but 30 cm at fast), and of forty 1 m boxes at fast, moves less than 1 % of a
-/// box sideways over 60 s after settling. Their faces are soft in tilt, and the chain of them, each stiffened
-/// for its own load, held about 17 boxes: at fast twenty 1 m boxes leaned over in a tilt
-/// that doubled every 2 s, at balanced they fell within 50 s, and at precise twenty 10 cm
-/// and 30 cm boxes fell within 10 s and 30 s. Their faces are levelled for the column's
-/// length and solved with it as a whole (see `ChainFace::needs_column`, `ChainFace::column_level_share`).
+/// box sideways over 60 s after settling. Their faces are soft in tilt, and the chain of
+/// them, each stiffened for its own load, held about 17 boxes: at fast twenty 1 m boxes
+/// leaned over in a tilt that doubled every 2 s, at balanced they fell within 50 s, and at
+/// precise twenty 10 cm and 30 cm boxes fell within 10 s and 30 s. Their faces are levelled
+/// for the column's length and solved with it as a whole (see `ChainFace::needs_column`,
+/// `ChainFace::column_level_share`).
 #[test]
 fn tall_stacks_stand_at_every_preset() {
     let mut failures = Vec::new();
@@ -968,21 +962,7 @@ fn tall_stacks_stand_at_every_preset() {
             {
                 continue;
             }
-            let mut w = PhysicsWorld::new(PhysicsSettings {
-                sleep_enabled: false,
-                ..preset.settings()
-            });
-            let g = w.insert_body(RigidBodyDesc::fixed());
-            w.insert_collider(ColliderDesc::half_space(Vec3::Y).friction(0.6), g);
-            let h = 0.5 * size;
-            let boxes: Vec<_> = (0..count)
-                .map(|i| {
-                    let p = Vec3::new(0.0, size * (0.5 + i as f32), 0.0);
-                    let b = w.insert_body(RigidBodyDesc::dynamic().translation(p));
-                    w.insert_collider(ColliderDesc::cuboid(h, h, h).friction(0.6), b);
-                    b
-                })
-                .collect();
+            let (mut w, boxes) = column_world(preset, size, count);
             let top = boxes[count - 1];
             let dt = w.settings().dt;
             run(&mut w, (2.0 / dt) as usize);

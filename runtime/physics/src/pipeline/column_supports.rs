@@ -71,6 +71,9 @@ impl ColumnSupports {
         if self.column_masses.is_empty() {
             self.column_masses.extend(states.iter().map(&mass_of));
             for top in 0..self.counts.len().min(states.len()) {
+                if self.counts[top] != 1 {
+                    continue;
+                }
                 let mass = mass_of(&states[top]);
                 let (counts, below) = (&self.counts, &self.below);
                 for down in Self::down_from(counts, below, top, states.len()) {
@@ -103,18 +106,17 @@ impl ColumnSupports {
             self.count(manifolds, pairs, gravity);
         }
         if self.column_lengths.is_empty() {
-            // Bodies above, then (once every walk is in) the whole column.
-            let mut under = vec![0u16; bodies];
+            // Each body walks down its column: it counts in the length of every body under
+            // it, and those count in its own.
             self.column_lengths.resize(bodies, 1);
             let (counts, below) = (&self.counts, &self.below);
-            for (top, under) in under.iter_mut().enumerate().take(counts.len()) {
+            for top in 0..counts.len().min(bodies) {
+                let mut under = 0u16;
                 for down in Self::down_from(counts, below, top, bodies) {
                     self.column_lengths[down] = self.column_lengths[down].saturating_add(1);
-                    *under = under.saturating_add(1);
+                    under = under.saturating_add(1);
                 }
-            }
-            for (length, under) in self.column_lengths.iter_mut().zip(under) {
-                *length = length.saturating_add(under);
+                self.column_lengths[top] = self.column_lengths[top].saturating_add(under);
             }
         }
         self.column_lengths.get(body as usize).copied().unwrap_or(1)

@@ -357,9 +357,9 @@ impl PhysicsWorld {
             &mut self.supports,
             &self.solver_handles,
         );
-        // `h·ω` of the stiffest column face its depth budget stiffened: how many column
-        // passes the step needs (`column_passes`).
-        let mut stiffest_column = 0.0f32;
+        // Whether a column face is one its depth budget stiffened: how many column passes
+        // the step needs (`column_passes`).
+        let mut budget_column = false;
         let mut prepare_one = |r: &ManifoldRef,
                                out: &mut PreparedManifold,
                                overloads: &mut Vec<Overload>| {
@@ -670,9 +670,7 @@ impl PhysicsWorld {
                 (softness, used_hz)
             };
             c.softness = softness;
-            if c.column && stiff && budgeted {
-                stiffest_column = stiffest_column.max(h * 2.0 * std::f32::consts::PI * final_hz);
-            }
+            budget_column |= c.column && stiff && budgeted;
             // Deeper than twice the budget even at the stiffest contact, under the load of
             // this step (not the remembered one, which an impact fills for several steps):
             // a candidate, named once it is one `OVERLOAD_SUSTAIN_STEPS` running.
@@ -731,7 +729,7 @@ impl PhysicsWorld {
             restitution: bouncy,
             max_linear_speed: s.max_linear_speed,
             max_angular_speed: s.max_angular_speed,
-            column_passes: column_passes(stiffest_column),
+            column_passes: column_passes(budget_column),
             jitter: Jitter {
                 dt: s.dt,
                 gravity: s.gravity.length(),

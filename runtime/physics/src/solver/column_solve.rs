@@ -204,7 +204,7 @@ struct BatchRef {
 /// Faces solved together: `faces[start..start + len]`, with `size` unknowns (their
 /// aggregates), whose coupling matrix starts at `coupling[matrix]` (`size × size`,
 /// row-major), as does its factor in `factors`, whose rows' first columns inside the
-/// envelope start at `envelope[matrix_rows]` (`size`), and whose rows' compliances and level
+/// envelope start at `envelope[rows]` (`size`), and whose rows' compliances and level
 /// shares that factor was made with start at `factored_with[key]` (`len × 5`).
 #[derive(Clone, Copy, Debug)]
 struct Group {
@@ -236,7 +236,7 @@ pub(crate) struct ColumnSolve {
     /// 20-box stack at 30 Hz × 2 cost 0.8 ms a step.
     factors: Vec<f32>,
     /// Per group and row of its coarse system, the first column inside its envelope: every
-    /// entry left of it is zero, in the coupling and in its factor (see [`envelope`]).
+    /// entry left of it is zero, in the coupling and in its factor (see [`cholesky_factor`]).
     envelope: Vec<u32>,
     factored_with: Vec<f32>,
     /// Scratch of [`ColumnSolve::correct`]: per batch, its rows and its points' impulses.
@@ -308,14 +308,8 @@ impl ColumnSolve {
             .map(|i| (root(&mut parent, i), i))
             .collect();
         order.sort_unstable();
-        let mut start = 0;
-        while start < order.len() {
-            let end = order[start..]
-                .iter()
-                .position(|&(r, _)| r != order[start].0)
-                .map_or(order.len(), |k| start + k);
-            linked_order(&mut order[start..end], &found);
-            start = end;
+        for group in order.chunk_by_mut(|a, b| a.0 == b.0) {
+            linked_order(group, &found);
         }
         for (_, i) in &order {
             let (batch, lane, face) = found[*i];
@@ -333,12 +327,8 @@ impl ColumnSolve {
             });
         }
         let mut start = 0;
-        while start < order.len() {
-            let group_root = order[start].0;
-            let end = order[start..]
-                .iter()
-                .position(|&(r, _)| r != group_root)
-                .map_or(order.len(), |k| start + k);
+        for group in order.chunk_by(|a, b| a.0 == b.0) {
+            let end = start + group.len();
             for run in (start..end).step_by(MAX_COLUMN_GROUP) {
                 let len = (end - run).min(MAX_COLUMN_GROUP);
                 let faces = &self.faces[run..run + len];

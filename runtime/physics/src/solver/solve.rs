@@ -5,7 +5,7 @@ use glam::{Quat, Vec3, Vec3A};
 
 use super::batching::ContactBatches;
 use super::body_state::BodyState;
-use super::contact_batch::{Jitter, Pass, COLUMN_STIFFNESS};
+use super::contact_batch::{Jitter, Pass};
 use super::elastic_energy::ElasticEnergy;
 use super::free_rotation::free_rotation_step;
 use super::joint_constraint::{JointConstraint, Rows};
@@ -44,12 +44,12 @@ pub const COLUMN_PASSES: u32 = 16;
 /// step with all [`COLUMN_PASSES`], 0.14 ms with two.
 pub const SOFT_COLUMN_PASSES: u32 = 2;
 
-/// Passes over the columns a substep where the stiffest column face its depth budget
-/// stiffened is at `h·ω` = `stiffness` (0 for none): [`COLUMN_PASSES`], or
-/// [`SOFT_COLUMN_PASSES`] where no such face is stiff.
+/// Passes over the columns a substep: [`COLUMN_PASSES`] where some column face is one its
+/// depth budget stiffened past `contact_batch::COLUMN_STIFFNESS` (`budget_column`), else
+/// [`SOFT_COLUMN_PASSES`].
 #[must_use]
-pub fn column_passes(stiffness: f32) -> u32 {
-    if stiffness > COLUMN_STIFFNESS {
+pub fn column_passes(budget_column: bool) -> u32 {
+    if budget_column {
         COLUMN_PASSES
     } else {
         SOFT_COLUMN_PASSES
