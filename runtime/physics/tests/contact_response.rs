@@ -2,7 +2,9 @@
 mod common;
 use common::*;
 use onyx_physics::glam::{Quat, Vec3};
-use onyx_physics::{ColliderDesc, PhysicsSettings, PhysicsWorld, Pose, RigidBodyDesc};
+use onyx_physics::{
+    ColliderDesc, PhysicsPreset, PhysicsSettings, PhysicsWorld, Pose, RigidBodyDesc,
+};
 
 /// Drops a sphere from `h` (bottom height) and returns the apex height of the first rebound.
 fn rebound_apex(e: f32, h: f32) -> f32 {
@@ -227,4 +229,47 @@ fn kinematic_platform_carries_box_with_friction_lag_v2_over_2_mu_g() {
         (vb - v).abs() < 0.01,
         "carried box speed {vb}, expected {v}"
     );
+}
+
+/// A frictionless box on a kinematic platform turning at ω about a horizontal axis through
+/// the platform's centre slides from the first tilt. Along the platform (its own frame) the
+/// box's centre obeys `x'' = ω²·x − g·sin ωt` from `x = 0`, `x' = r·ω` (the platform turns
+/// under a box at rest, `r` above the axis): `x(t) = (r − g/2ω²)·sinh ωt + g/2ω²·sin ωt`.
+/// Frictionless faces hold their normal through the small tilts a soft stack settles with
+/// (`narrow_phase::FRICTIONLESS_NORMAL_HOLD_ANGLE`); a kinematic body's turn is real, and held
+/// the box stayed level in the world until the platform had turned 0.1 rad (at 0.5 s it was
+/// 2 cm up the slope from where it should be).
+#[test]
+fn a_frictionless_box_slides_down_a_turning_kinematic_platform_from_its_first_tilt() {
+    let omega = 0.1;
+    let r = 0.6;
+    for preset in PhysicsPreset::ALL {
+        let mut w = PhysicsWorld::new(PhysicsSettings {
+            sleep_enabled: false,
+            ..preset.settings()
+        });
+        let plat = w.insert_body(RigidBodyDesc::kinematic());
+        w.insert_collider(ColliderDesc::cuboid(3.0, 0.1, 3.0).friction(0.0), plat);
+        w.body_mut(plat)
+            .unwrap()
+            .set_angvel(Vec3::new(0.0, 0.0, omega));
+        let b = w.insert_body(RigidBodyDesc::dynamic().translation(Vec3::new(0.0, r, 0.0)));
+        w.insert_collider(ColliderDesc::cuboid(0.5, 0.5, 0.5).friction(0.0), b);
+        let dt = w.settings().dt;
+        let k = G / (2.0 * omega * omega);
+        for t in [0.5f32, 1.0, 1.5] {
+            while (w.time() as f32) < t - 0.5 * dt {
+                w.step();
+            }
+            let p = w.body(plat).unwrap();
+            let along =
+                (p.rotation().inverse() * (w.body(b).unwrap().translation() - p.translation())).x;
+            let wt = omega * w.time() as f32;
+            let expected = (r - k) * wt.sinh() + k * wt.sin();
+            assert!(
+                (along - expected).abs() < 0.005 + 0.03 * expected.abs(),
+                "{preset}: at {t} s the box is {along} m along the platform, expected {expected}"
+            );
+        }
+    }
 }

@@ -17,6 +17,9 @@ pub struct ContactManifold {
     pub points: ArrayVec<ContactPoint, MAX_MANIFOLD_POINTS>,
     /// First friction direction (world), fixed for the step.
     pub(crate) tangent1: Vec3,
+    /// A frictionless face's held normal (zero while none), which a one-point manifold in
+    /// between does not replace (see `narrow_phase::FRICTIONLESS_NORMAL_HOLD_ANGLE`).
+    pub(crate) face_normal: Vec3,
 }
 
 impl ContactManifold {

@@ -35,6 +35,8 @@ pub(crate) struct NarrowBody {
     pub ccd_enabled: bool,
     /// Dynamic and asleep: a contact with an awake body wakes it.
     pub sleeping_dynamic: bool,
+    /// Moved by the user, not by contacts: its turns are real, never a soft contact's tilt.
+    pub kinematic: bool,
 }
 
 impl NarrowBody {
@@ -52,6 +54,7 @@ impl NarrowBody {
             quarantined: b.quarantined,
             ccd_enabled: b.ccd_enabled,
             sleeping_dynamic: b.body_type == BodyType::Dynamic && b.sleeping,
+            kinematic: b.body_type == BodyType::Kinematic,
         }
     }
 }
