@@ -670,6 +670,9 @@ impl PhysicsWorld {
                 (softness, used_hz)
             };
             c.softness = softness;
+            if c.column {
+                c.friction.denoise_twist();
+            }
             budget_column |= c.column && stiff && budgeted;
             // Deeper than twice the budget even at the stiffest contact, under the load of
             // this step (not the remembered one, which an impact fills for several steps):

@@ -15,6 +15,17 @@ pub(crate) type F = f32x4;
 /// Manifolds solved together.
 pub(crate) const LANES: usize = 4;
 
+/// Velocity components (m/s, rad/s) smaller than this are written back as zero by the
+/// batches that hold a column face (see `ContactBatch::solve`). A column's passes drive the
+/// sideways and twisting rounding of a settled, centred stack towards zero geometrically,
+/// into subnormal floats, and each product with one is a microcode assist on x86: the
+/// 20-box stack at 60 Hz × 4 cost 0.124 ms a step, 0.061 ms with the processor flushing
+/// subnormals (which Rust code may not switch on: its optimiser assumes the default
+/// floating-point environment), 0.074 ms flushed here (0.069 ms flushed in every batch,
+/// which cost the 20-row pyramid, with no columns, 3 %). 1e-20 m/s moves a body a metre in
+/// 3·10¹² years; its products with masses, levers and compliances stay normal floats.
+pub const TINY_SPEED: f32 = 1e-20;
+
 /// One 3-vector per lane.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub(crate) struct V3 {
@@ -29,6 +40,17 @@ impl V3 {
         y: F::ZERO,
         z: F::ZERO,
     };
+
+    /// Each component smaller than `tiny` in magnitude set to zero.
+    #[inline(always)]
+    pub fn flush(self, tiny: F) -> Self {
+        let f = |x: F| tiny.simd_gt(x.abs()).select(F::ZERO, x);
+        Self {
+            x: f(self.x),
+            y: f(self.y),
+            z: f(self.z),
+        }
+    }
 
     /// Lane `l` holds `v[l]` (a 4×4 transpose).
     #[inline(always)]
@@ -173,6 +195,18 @@ impl SubAssign for V3 {
 pub(crate) struct Velocities {
     pub v: V3,
     pub w: V3,
+}
+
+impl Velocities {
+    /// Each component smaller than [`TINY_SPEED`] in magnitude set to zero.
+    #[inline(always)]
+    pub fn flush_tiny(self) -> Self {
+        let tiny = F::splat(TINY_SPEED);
+        Self {
+            v: self.v.flush(tiny),
+            w: self.w.flush(tiny),
+        }
+    }
 }
 
 /// Reads one field (`field(state)`) of `bodies[l]` into lane `l`.
