@@ -61,8 +61,9 @@ pub const MANIFOLD_REUSE_MAX_ANGLE: f32 = 0.005;
 /// frictionless ever stops them. A one-point manifold in between (an edge grazing as the face
 /// rocks) is used for its step but does not replace the held normal: it did, and the face
 /// was held at its tilt for good. At 0.05, 6 of 100 random frictionless stacks of 3–5 boxes
-/// (0.6–1.2 m, every load 10 cm inside its face) slid apart at 30 Hz × 2; at 0.1 none (and
-/// 2 of 60 of 3–8 boxes with loads 5 cm inside, whose settling tilts them 0.1 rad). A face
+/// (0.6–1.2 m, every load 10 cm inside its face) slid apart at 30 Hz × 2; at 0.1 none, nor
+/// (once their faces could be column faces, `ChainFace::needs_column`) any of 60 of 3–8
+/// boxes with loads 5 cm inside, whose settling had tilted them past 0.1 rad. A face
 /// that really turns gets its normal back once it has turned that far, so a frictionless
 /// body on a dynamic support that tilts (a seesaw) starts sliding only past it: the larger,
 /// the later. A kinematic body's turns are real, and its faces are never held.
