@@ -5,6 +5,7 @@ use glam::{Mat3A, Vec3A};
 
 use super::body_state::BodyState;
 use super::lanes::{F, LANES, V3};
+use super::noise::vector_without_noise;
 use super::softness::Softness;
 use super::solver_body::SolverBody;
 
@@ -79,14 +80,14 @@ pub(crate) struct FrictionPart {
 
 impl FrictionPart {
     /// Sets to zero the components of the twist rows' [`Self::in_a`] and [`Self::in_b`]
-    /// within rounding of their largest. A body's inverse inertia turned onto a normal along
+    /// within rounding of their largest (`noise::vector_without_noise`). A body's inverse inertia turned onto a normal along
     /// one of its axes has rounding in the other two (1e-20 of the first), and in a column
     /// (whose passes drive its twist towards zero) their products with the twist impulses
     /// were subnormal floats, a microcode assist each on x86: the 20-box stack's twist rows
     /// ran at ten times their cost (see `lanes::TINY_SPEED`).
     pub(crate) fn denoise_twist(&mut self) {
-        self.in_a = denoise(self.in_a);
-        self.in_b = denoise(self.in_b);
+        self.in_a = vector_without_noise(self.in_a);
+        self.in_b = vector_without_noise(self.in_b);
     }
 }
 
@@ -217,12 +218,6 @@ pub(crate) struct ContactConstraint {
     pub friction: FrictionPart,
     /// The normal rows as a block.
     pub block: NormalBlock,
-}
-
-/// `v` with the components within rounding of its largest set to zero.
-fn denoise(v: Vec3A) -> Vec3A {
-    let tiny = 4.0 * f32::EPSILON * v.abs().max_element();
-    Vec3A::select(v.abs().cmple(Vec3A::splat(tiny)), Vec3A::ZERO, v)
 }
 
 /// Friction masses of one point: the inverse of the 2×2 tangent block `K` of `J M⁻¹ Jᵀ`
