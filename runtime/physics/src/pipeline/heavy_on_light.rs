@@ -8,6 +8,7 @@ use glam::Vec3;
 use crate::narrowphase::contact_pair::ContactPair;
 use crate::physics_settings::PhysicsSettings;
 use crate::solver::body_state::BodyState;
+use crate::solver::contact_batch::LEVEL_MAX_FRICTION;
 use crate::solver::contact_constraint::ManifoldRef;
 
 /// Inverse-mass factors for manifold `r` of `pair` (bodies as solver indices into
@@ -25,7 +26,18 @@ use crate::solver::contact_constraint::ManifoldRef;
 /// kept to a heavy body resting on a light one: impacts, and light bodies on heavy ones,
 /// use the true masses. So do elastic pairs ([`ContactPair::elastic`]), whose energy is
 /// kept on the true masses' (scaled at ratio 3, 50 elastic balls of masses up to 250:1
-/// changed their energy by 22 % at fast).
+/// changed their energy by 22 % at fast), and frictionless ones: scaled, the heavy body
+/// takes every impulse the light one is spared, a pull and push that are not equal and
+/// opposite and do work as the pair rocks (a 30 cm frictionless cube on a 10 cm one, 27:1,
+/// slid off it at fast, a 3 mm one off a 1 mm one at balanced; `examples/larger_on_smaller`
+/// in the physics bench). Solved on the true masses, a frictionless heavy body on a light
+/// one is a column (`contact_batch::column_face`), whose faces the coarse correction solves
+/// as a whole and which stiffen as far as their budget asks
+/// (`softness::COLUMN_MAX_SUBSTEP_FRACTION`): 1000:1 holds within its budget at every
+/// preset. With friction the light body is pinched between two faces whose friction the
+/// passes converge one sweep at a time, and past [`scaling_onset`] it is still squeezed out
+/// on its true mass (a 1 cm cube under a 4 cm one, 64:1, at balanced): those pairs are
+/// scaled.
 #[inline]
 pub(crate) fn support_mass_scale(
     pair: &ContactPair,
@@ -47,7 +59,8 @@ pub(crate) fn support_mass_scale(
     }
     let gravity = settings.gravity;
     let g = gravity.length();
-    if !(max_ratio >= 1.0 && g > 0.0) || pair.elastic() {
+    if !(max_ratio >= 1.0 && g > 0.0) || pair.elastic() || pair.static_friction < LEVEL_MAX_FRICTION
+    {
         return [1.0; 2];
     }
     let n = pair.manifolds[r.manifold as usize].normal;
@@ -66,25 +79,37 @@ pub(crate) fn support_mass_scale(
 }
 
 /// Mass ratio past which [`support_mass_scale`] scales a resting pair: the larger of
-/// `max_support_mass_ratio` and the square of the step's Gauss–Seidel sweeps
-/// (`substeps · solver_iterations`; 16 at balanced and precise, 4 at fast).
+/// `max_support_mass_ratio` and [`ONSET_PER_SQUARED_SWEEP`] times the square of the step's
+/// Gauss–Seidel sweeps (`substeps · solver_iterations`; 48 at balanced and precise, 12 at
+/// fast).
 ///
 /// A body `r` times heavier is caught after about `√r` sweeps (see [`support_mass_scale`]),
-/// so up to this ratio it is caught within the step it lands, and from then on the
-/// warm-started impulse carries it (from its first step, `solve_stage::NEW_FACE_STEPS`).
-/// Scaling there only did harm: a light body that passes on less of the heavy one's weight
-/// than it carries is rocked by it, at the sizes where a rocking mode is fast next to the
-/// substep. Scaled from 3:1, a 2 mm cube on a 1 mm one (8:1) fell off it at balanced and
-/// precise, and a 1.5 cm or 2 cm cube on a 1 cm one drifted 15-25 % of its size in 10 s at
-/// balanced; solved as they are, each holds within 2 % and stays put (`tests/stacking.rs`,
-/// `a_larger_box_on_a_smaller_one_holds_and_stays_put`). At fast, two sweeps a step, a 10:1
-/// pair loaded sideways still needs the scaling (it tipped over without it,
-/// `tests/heavy_and_small.rs`).
+/// so up to about the square of the sweeps it is caught within the step it lands, and from
+/// then on the warm-started impulse carries it (from its first step,
+/// `solve_stage::NEW_FACE_STEPS`). Scaling there only did harm: a light body that passes on
+/// less of the heavy one's weight than it carries is rocked by it, at the sizes where a
+/// rocking mode is fast next to the substep. Scaled from 3:1, a 2 mm cube on a 1 mm one
+/// (8:1) fell off it at balanced and precise, and a 1.5 cm or 2 cm cube on a 1 cm one
+/// drifted 15-25 % of its size in 10 s at balanced; solved as they are, each holds within
+/// 2 % and stays put (`tests/stacking.rs`, `a_larger_box_on_a_smaller_one_holds_and_stays_put`).
 #[inline]
 pub(crate) fn scaling_onset(settings: &PhysicsSettings) -> f32 {
     let sweeps = settings.substeps.saturating_mul(settings.solver_iterations) as f32;
-    settings.max_support_mass_ratio.max(sweeps * sweeps)
+    settings
+        .max_support_mass_ratio
+        .max(ONSET_PER_SQUARED_SWEEP * sweeps * sweeps)
 }
+
+/// [`scaling_onset`] over the square of the step's sweeps. Bounded `[1, ∞)`: at 1 (an onset
+/// of 4:1 at fast) a 20 cm cube with friction on a 10 cm one (8:1) rocked at 3 Hz, the
+/// scaled pair's unequal impulses feeding the sway, and fell at fast, as did 2 mm on 1 mm,
+/// 2 cm on 1 cm and 3 mm on 1 mm at balanced and precise (27:1 past 16:1); from 2 they stand
+/// (`examples/larger_on_smaller` in the physics bench: 7 → 2 of 12 fell at fast with friction,
+/// 1 → 0 at balanced and precise), at 3 the same, away from the 8:1 of cubes twice the size.
+/// Past the onset, unscaled, the light body is squeezed out from between its two faces'
+/// friction (a 1 cm cube under a 4 cm one at balanced, 64:1 and 48:1 past the onset); a
+/// pair 10:1 loaded sideways at fast holds either way (`tests/heavy_and_small.rs`).
+pub const ONSET_PER_SQUARED_SWEEP: f32 = 3.0;
 
 /// The two bodies of a manifold with normal `n` (from `a` to `b`) as (upper, lower): the one
 /// above the other along `gravity` first.

@@ -40,16 +40,23 @@ pub const LOAD_MEMORY_HALF_LIFE: f32 = 0.5;
 pub const SIZE_STIFFENING_MAX_STEP_FRACTION: f32 = 1.5;
 
 /// A settled column face (see `contact_batch::COLUMN_SETTLE_STEPS`) may stiffen up to this
-/// fraction of the substep rate, 1/s per Hz (`h·ω` up to 4π), past the step's cap
-/// ([`SIZE_STIFFENING_MAX_STEP_FRACTION`]): resting, its geometry does not turn within the
-/// step, and its column is solved as a whole (`solve::COLUMN_PASSES`, `column_solve`).
-/// Bounded `(0, ∞)`: it only lifts the cap, and a face stiffens no further than its depth
-/// budget asks. At 60 Hz × 4, 0.5 left five 1 mm cubes 14 % deep and ten 3 mm ones 10 %, and
-/// 1 left ten 1 mm cubes 7.8 % deep (the face under nine cubes of its own mass needs about
-/// twice the substep rate for the 2 % budget); from 2 every column of 1 mm–10 m cubes of
-/// `tests/stacking.rs` settles at the budget, the same at 4. (Without the coarse correction,
-/// 0.7 and more no longer converged the column: ten 3 mm cubes sank 19 % or fell.)
-pub const COLUMN_MAX_SUBSTEP_FRACTION: f32 = 2.0;
+/// fraction of the substep rate, 1/s per Hz (`h·ω` up to 32π, where the soft row is rigid
+/// to 10⁻⁴), past the step's cap ([`SIZE_STIFFENING_MAX_STEP_FRACTION`]): resting, its
+/// geometry does not turn within the step, and its column is solved as a whole
+/// (`solve::COLUMN_PASSES`, `column_solve`). Bounded `(0, ∞)`: it only lifts the cap, and a
+/// face stiffens no further than its depth budget asks. At 60 Hz × 4, 0.5 left five 1 mm
+/// cubes 14 % deep and ten 3 mm ones 10 %, and 1 left ten 1 mm cubes 7.8 % deep (the face
+/// under nine cubes of its own mass needs about twice the substep rate for the 2 % budget);
+/// from 2 every column of equal 1 mm–10 m cubes of `tests/stacking.rs` settles at the
+/// budget. A heavy body on a light one needs more: the face carries `ratio` times the light
+/// body's weight, so its stiffness for the budget grows with `√ratio`, and at 2 a
+/// frictionless 10 cm cube on a 1 cm one (1000:1, solved on the true masses: see
+/// `heavy_on_light::support_mass_scale`) sank 10.8 % of the small cube at balanced and 60 %
+/// at fast; at 8 2.0 % at balanced and 10.8 % at fast, at 16 2.0 % at balanced and precise and
+/// 2.7 % at fast. (Without the coarse
+/// correction, 0.7 and more no longer converged the column: ten 3 mm cubes sank 19 % or
+/// fell.)
+pub const COLUMN_MAX_SUBSTEP_FRACTION: f32 = 16.0;
 
 /// Coefficients of a soft constraint with stiffness `hertz` and damping ratio `zeta`
 /// at substep `h` (Box2D v3 / "soft step" formulation):
