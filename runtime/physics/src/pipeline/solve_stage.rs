@@ -76,8 +76,9 @@ struct Overload {
     needed_hz: f32,
     /// The load in weights of its own effective mass.
     load_ratio: f32,
-    /// A column face (its cap is `Softness::max_column_hertz`).
-    column: bool,
+    /// For a column face, its `Softness::column_lift` (its cap is
+    /// `Softness::max_column_hertz`).
+    column_lift: Option<f32>,
 }
 
 impl PhysicsWorld {
@@ -112,8 +113,8 @@ impl PhysicsWorld {
             let holding_preset = PhysicsPreset::ALL.into_iter().find(|p| {
                 let dt = 1.0 / p.step_hz();
                 let h = dt / p.substeps() as f32;
-                let cap = if o.column {
-                    Softness::max_column_hertz(h, dt)
+                let cap = if let Some(lift) = o.column_lift {
+                    Softness::max_column_hertz(h, dt, lift)
                 } else {
                     Softness::max_size_hertz(h, dt)
                 };
@@ -253,7 +254,6 @@ impl PhysicsWorld {
         let max_hertz = Softness::max_load_hertz(h, s.dt);
         let max_ball_hertz = Softness::max_ball_load_hertz(h, s.dt);
         let max_size_hertz = Softness::max_size_hertz(h, s.dt);
-        let max_column_hertz = Softness::max_column_hertz(h, s.dt);
         let g_h = s.gravity.length() * h;
         self.manifold_refs.clear();
         let mut contacts = 0u32;
@@ -664,10 +664,15 @@ impl PhysicsWorld {
             // stiffen past the step's cap.
             let settled =
                 pair.column_steps >= COLUMN_SETTLE_STEPS || pair.column_steps == pair.solved_steps;
-            let (softness, final_hz) = if c.column && settled {
-                stiffen(max_column_hertz)
-            } else {
-                (softness, used_hz)
+            // Its column's lift of the cap, for a column face (see `Softness::column_lift`).
+            let column_lift = c.column.then(|| {
+                let length =
+                    supports.column_length(upper, manifolds, pairs, s.gravity, states.len());
+                Softness::column_lift(ratio, length)
+            });
+            let (softness, final_hz) = match column_lift {
+                Some(lift) if settled => stiffen(Softness::max_column_hertz(h, s.dt, lift)),
+                _ => (softness, used_hz),
             };
             c.softness = softness;
             if c.column {
@@ -690,7 +695,7 @@ impl PhysicsWorld {
                         // Held where it would not be named: within the reported depth.
                         needed_hz: Softness::size_hertz(load_accel, OVERLOAD_DEPTH_FACTOR * budget),
                         load_ratio: if g > 0.0 { own_accel / g } else { stiffening },
-                        column: c.column,
+                        column_lift,
                     });
                 }
             }

@@ -40,23 +40,25 @@ pub const LOAD_MEMORY_HALF_LIFE: f32 = 0.5;
 pub const SIZE_STIFFENING_MAX_STEP_FRACTION: f32 = 1.5;
 
 /// A settled column face (see `contact_batch::COLUMN_SETTLE_STEPS`) may stiffen up to this
-/// fraction of the substep rate, 1/s per Hz (`h·ω` up to 32π, where the soft row is rigid
-/// to 10⁻⁴), past the step's cap ([`SIZE_STIFFENING_MAX_STEP_FRACTION`]): resting, its
-/// geometry does not turn within the step, and its column is solved as a whole
+/// fraction of the substep rate, 1/s per Hz (`h·ω` up to 4π), past the step's cap
+/// ([`SIZE_STIFFENING_MAX_STEP_FRACTION`]), times its [`Softness::column_lift`]: resting,
+/// its geometry does not turn within the step, and its column is solved as a whole
 /// (`solve::COLUMN_PASSES`, `column_solve`). Bounded `(0, ∞)`: it only lifts the cap, and a
 /// face stiffens no further than its depth budget asks. At 60 Hz × 4, 0.5 left five 1 mm
 /// cubes 14 % deep and ten 3 mm ones 10 %, and 1 left ten 1 mm cubes 7.8 % deep (the face
 /// under nine cubes of its own mass needs about twice the substep rate for the 2 % budget);
-/// from 2 every column of equal 1 mm–10 m cubes of `tests/stacking.rs` settles at the
-/// budget. A heavy body on a light one needs more: the face carries `ratio` times the light
-/// body's weight, so its stiffness for the budget grows with `√ratio`, and at 2 a
-/// frictionless 10 cm cube on a 1 cm one (1000:1, solved on the true masses: see
-/// `heavy_on_light::support_mass_scale`) sank 10.8 % of the small cube at balanced and 60 %
-/// at fast; at 8 2.0 % at balanced and 10.8 % at fast, at 16 2.0 % at balanced and precise and
-/// 2.7 % at fast. (Without the coarse
-/// correction, 0.7 and more no longer converged the column: ten 3 mm cubes sank 19 % or
-/// fell.)
-pub const COLUMN_MAX_SUBSTEP_FRACTION: f32 = 16.0;
+/// from 2 every column of 1 mm–10 m cubes of `tests/stacking.rs` settles at the budget, the
+/// same at 4, but from 4 columns of ten 5 mm cubes zig-zag at fast fell
+/// (`examples/offset_stacks` in the physics bench). (Without the coarse correction, 0.7 and
+/// more no longer converged the column: ten 3 mm cubes sank 19 % or fell.)
+pub const COLUMN_MAX_SUBSTEP_FRACTION: f32 = 2.0;
+
+/// Most [`Softness::column_lift`] multiplies a column face's cap by: `h·ω` up to 32π, where
+/// the soft row is rigid to 10⁻⁴. Bounded `[1, ∞)`: at 1 a frictionless 10 cm cube on a 1 cm
+/// one (1000:1, solved on the true masses: see `heavy_on_light::support_mass_scale`) sank
+/// 10.8 % of the small cube at balanced and 60 % at fast; at 4 2.0 % at balanced and 10.8 %
+/// at fast, at 8 2.0 % at balanced and precise and 2.7 % at fast.
+pub const MAX_COLUMN_LIFT: f32 = 8.0;
 
 /// Coefficients of a soft constraint with stiffness `hertz` and damping ratio `zeta`
 /// at substep `h` (Box2D v3 / "soft step" formulation):
@@ -171,10 +173,27 @@ impl Softness {
         (SIZE_STIFFENING_MAX_SUBSTEP_FRACTION / h).min(SIZE_STIFFENING_MAX_STEP_FRACTION / dt)
     }
 
-    /// Stiffest a settled column face may be, Hz: [`Softness::max_size_hertz`] or
-    /// `h⁻¹ · 0.5` ([`COLUMN_MAX_SUBSTEP_FRACTION`]), whichever is stiffer.
+    /// Stiffest a settled column face with [`Softness::column_lift`] `lift` may be, Hz:
+    /// [`Softness::max_size_hertz`] or `lift · h⁻¹ · 2` ([`COLUMN_MAX_SUBSTEP_FRACTION`]),
+    /// whichever is stiffer.
     #[must_use]
-    pub fn max_column_hertz(h: f32, dt: f32) -> f32 {
-        Self::max_size_hertz(h, dt).max(COLUMN_MAX_SUBSTEP_FRACTION / h)
+    pub fn max_column_hertz(h: f32, dt: f32, lift: f32) -> f32 {
+        Self::max_size_hertz(h, dt).max(lift * COLUMN_MAX_SUBSTEP_FRACTION / h)
+    }
+
+    /// How far past [`COLUMN_MAX_SUBSTEP_FRACTION`] a column face may stiffen: the square
+    /// root of the load it carries per body of its column of `column_length` bodies,
+    /// `√(load_ratio / (2·length))`, in `[1, MAX_COLUMN_LIFT]`. A face's stiffness for its
+    /// budget grows with the square root of its load (`load_ratio`, in weights of its own
+    /// effective mass); the cap holds a column of equal bodies, whose faces carry up to two
+    /// such weights per body of the column (a face between two bodies has their reduced
+    /// mass), and is lifted where a body is far heavier than the one under it: a 10 cm cube
+    /// on a 1 cm one loads both faces about 1000 times the small cube's weight in a column
+    /// of two (lift 8). (Over a static base a face carries one weight per body; lifted from
+    /// there, a 1 mm cube with friction under a 2 mm one fell at fast.)
+    #[must_use]
+    pub fn column_lift(load_ratio: f32, column_length: u16) -> f32 {
+        let per_body = load_ratio / (2.0 * f32::from(column_length.max(1)));
+        per_body.max(1.0).sqrt().min(MAX_COLUMN_LIFT)
     }
 }
