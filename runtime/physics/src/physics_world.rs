@@ -67,6 +67,7 @@ pub struct PhysicsWorld {
     pub(crate) elastic_energy: crate::solver::elastic_energy::ElasticEnergy,
     /// The friction bounds the heavy-on-light scaling hides (see `HiddenLoads`).
     pub(crate) hidden_loads: crate::pipeline::heavy_on_light::HiddenLoads,
+    pub(crate) pinched: crate::pipeline::heavy_on_light::PinchedBodies,
     pub(crate) new_pairs: Vec<(u32, u32)>,
     /// Arena indices of the bodies that take part in this step (awake, not static, not
     /// quarantined), gathered by the pre-step and by wake-ups; sleeping bodies are not in it.
@@ -139,6 +140,7 @@ impl PhysicsWorld {
             contact_batches: Default::default(),
             elastic_energy: Default::default(),
             hidden_loads: Default::default(),
+            pinched: Default::default(),
             new_pairs: Vec::new(),
             deepest_contact: Vec::new(),
             active_bodies: Vec::new(),

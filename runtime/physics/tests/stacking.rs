@@ -710,7 +710,9 @@ fn assert_columns_hold<S: std::fmt::Display>(columns: &[(S, f32, Vec<Level>)]) {
 /// the square of the sweeps, `heavy_on_light::ONSET_PER_SQUARED_SWEEP`), and frictionless a
 /// 3 mm and a 1 cm cube slid off a 1 mm one and a 10 cm cube off a 1 cm one (frictionless
 /// pairs are no longer scaled: they are columns, whose faces stiffen as far as their budget
-/// asks, `softness::COLUMN_MAX_SUBSTEP_FRACTION`).
+/// asks, `Softness::column_lift`). Columns of 1, 2 and 3 mm cubes and of 3, 6 and 9 mm ones
+/// fell at balanced while the face under each light cube was levelled
+/// (`heavy_on_light::PinchedBodies`).
 #[test]
 fn a_larger_box_on_a_smaller_one_holds_and_stays_put() {
     let columns: &[&[f32]] = &[
@@ -721,6 +723,8 @@ fn a_larger_box_on_a_smaller_one_holds_and_stays_put() {
         &[0.01, 0.025],
         &[0.01, 0.03],
         &[0.01, 0.01, 0.02],
+        &[0.001, 0.002, 0.003],
+        &[0.003, 0.006, 0.009],
         &[0.1, 0.2],
         &[0.1, 0.25],
         &[0.1, 0.3],

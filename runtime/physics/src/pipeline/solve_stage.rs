@@ -3,7 +3,7 @@
 use glam::{Vec3, Vec3A};
 
 use super::column_supports::ColumnSupports;
-use super::heavy_on_light::{scaling_onset, support_mass_scale, upper_lower};
+use super::heavy_on_light::{scaling_onset, support_mass_scale, upper_lower, PINCHED_MASS_RATIO};
 use super::resting_accelerations::RestingAccelerations;
 use crate::body_type::BodyType;
 use crate::locked_axes::LockedAxes;
@@ -336,7 +336,17 @@ impl PhysicsWorld {
         } else {
             self.hidden_loads.clear();
         }
-        let hidden = &self.hidden_loads;
+        if max_inv_mass > min_inv_mass * PINCHED_MASS_RATIO {
+            self.pinched.update(
+                &self.manifold_refs,
+                &self.narrowphase.pairs,
+                &self.solver_states,
+                s.gravity,
+            );
+        } else {
+            self.pinched.clear();
+        }
+        let (hidden, pinched) = (&self.hidden_loads, &self.pinched);
         let resting = if bouncy {
             RestingAccelerations::new(
                 &mut self.manifold_refs,
@@ -707,7 +717,12 @@ impl PhysicsWorld {
             } else {
                 0.0
             };
-            c.load_level_share = if c.column {
+            // Not on a pinched body's support (see `PinchedBodies`): frictionless faces are
+            // levelled anyway.
+            c.load_level_share = if pinched.get(upper) && c.friction.friction >= LEVEL_MAX_FRICTION
+            {
+                0.0
+            } else if c.column {
                 chain(supports, final_hz).column_level_share()
             } else if c.block.patch
                 && g > 0.0
