@@ -62,12 +62,12 @@ pub struct PhysicsSettings {
     pub max_penetration_fraction: f32,
     /// Largest mass ratio a resting contact between two dynamic bodies is solved with: the
     /// lighter body's inverse mass is scaled down in that contact so that it looks at most
-    /// this many times lighter (see `pipeline/heavy_on_light.rs`). Only pairs past the larger
-    /// of this and `(substeps · solver_iterations)²` (16 at balanced and precise, 4 at fast)
-    /// are scaled: Gauss–Seidel catches a lighter ratio within its step, and scaling it rocks
-    /// a small light body (a 2 mm cube on a 1 mm one fell). Impacts and elastic pairs use the
-    /// true masses; the friction under the light body is given the load the scaling keeps
-    /// from it.
+    /// this many times lighter (see `pipeline/heavy_on_light.rs`). Only pairs with friction
+    /// past the larger of this and `3 · (substeps · solver_iterations)²` (48 at balanced and
+    /// precise, 12 at fast) are scaled: Gauss–Seidel catches a lighter ratio within its step,
+    /// and scaling it rocks a small light body (a 2 mm cube on a 1 mm one fell). Impacts,
+    /// elastic and frictionless pairs use the true masses; the friction under the light body
+    /// is given the load the scaling keeps from it.
     /// Default: `3`
     /// Too high (or 0, off): a heavy body on a light one rings into it for `√ratio`
     /// substeps and sinks about `g·ratio·h²` (17 cm for 1000:1 at balanced), and at fast an

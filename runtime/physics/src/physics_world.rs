@@ -67,6 +67,8 @@ pub struct PhysicsWorld {
     pub(crate) elastic_energy: crate::solver::elastic_energy::ElasticEnergy,
     /// The friction bounds the heavy-on-light scaling hides (see `HiddenLoads`).
     pub(crate) hidden_loads: crate::pipeline::heavy_on_light::HiddenLoads,
+    /// The bodies pinched under heavier ones, whose faces are not levelled (see
+    /// `PinchedBodies`).
     pub(crate) pinched: crate::pipeline::heavy_on_light::PinchedBodies,
     pub(crate) new_pairs: Vec<(u32, u32)>,
     /// Arena indices of the bodies that take part in this step (awake, not static, not

@@ -28,16 +28,15 @@ use crate::solver::contact_constraint::ManifoldRef;
 /// kept on the true masses' (scaled at ratio 3, 50 elastic balls of masses up to 250:1
 /// changed their energy by 22 % at fast), and frictionless ones: scaled, the heavy body
 /// takes every impulse the light one is spared, a pull and push that are not equal and
-/// opposite and do work as the pair rocks (a 30 cm frictionless cube on a 10 cm one, 27:1,
+/// opposite and do work as the pair rocks (a frictionless 3 cm cube on a 1 cm one, 27:1,
 /// slid off it at fast, a 3 mm one off a 1 mm one at balanced; `examples/larger_on_smaller`
 /// in the physics bench). Solved on the true masses, a frictionless heavy body on a light
 /// one is a column (`contact_batch::column_face`), whose faces the coarse correction solves
 /// as a whole and which stiffen as far as their budget asks (their cap lifted for the load
 /// they carry, `Softness::column_lift`): 1000:1 holds within 2 % at balanced and precise and
-/// 2.7 % at fast. With friction the light body is pinched between two faces whose friction the
-/// passes converge one sweep at a time, and past [`scaling_onset`] it is still squeezed out
-/// on its true mass (a 1 cm cube under a 4 cm one, 64:1, at balanced): those pairs are
-/// scaled.
+/// 2.7 % at fast. With friction, past [`scaling_onset`], the light body on its true mass is
+/// still squeezed out from between its two faces (a 1 cm cube under a 4 cm one, 64:1, at
+/// fast, and under a 10 cm one, 1000:1, at every preset): those pairs are scaled.
 #[inline]
 pub(crate) fn support_mass_scale(
     pair: &ContactPair,
@@ -106,9 +105,11 @@ pub(crate) fn scaling_onset(settings: &PhysicsSettings) -> f32 {
 /// 2 cm on 1 cm and 3 mm on 1 mm at balanced and precise (27:1 past 16:1); from 2 they stand
 /// (`examples/larger_on_smaller` in the physics bench: 7 → 2 of 12 fell at fast with friction,
 /// 1 → 0 at balanced and precise), at 3 the same, away from the 8:1 of cubes twice the size.
-/// Past the onset, unscaled, the light body is squeezed out from between its two faces'
-/// friction (a 1 cm cube under a 4 cm one at balanced, 64:1 and 48:1 past the onset); a
-/// pair 10:1 loaded sideways at fast holds either way (`tests/heavy_and_small.rs`).
+/// Past the onset, unscaled, a light body with friction is squeezed out from between its two
+/// faces (a 1 cm cube under a 4 cm one, 64:1, at fast, and under a 10 cm one at every
+/// preset); at 8 (128:1 at balanced) a 100:1 pair of 1 m cubes sank 2.6 cm there, past
+/// the 2 cm (`tests/heavy_and_small.rs`). A pair 10:1 loaded sideways at fast holds
+/// either way.
 pub const ONSET_PER_SQUARED_SWEEP: f32 = 3.0;
 
 /// The two bodies of a manifold with normal `n` (from `a` to `b`) as (upper, lower): the one
