@@ -702,7 +702,7 @@ fn assert_columns_hold<S: std::fmt::Display>(columns: &[(S, f32, Vec<Level>)]) {
 /// 1 mm one, the 1.5 cm and 2 cm cubes drifted 25 % and 15 % of their size off the 1 cm one
 /// and the 2 cm cube on two 1 cm ones fell at balanced; frictionless columns of 1, 2 and
 /// 4 cm and of 3, 6 and 12 cm cubes slid apart at balanced. Pairs within the square of the
-/// step's sweeps (16:1 here) are now solved as they are (`heavy_on_light::scaling_onset`).
+/// step's sweeps (16:1 here) were then solved as they are (`heavy_on_light::scaling_onset`).
 /// Past it, frictionless, a 3 or 5 cm cube slid off a 1 cm one and a 10 cm one went through
 /// it at balanced while the face under the light cube was kept from being a column face
 /// (`pipeline/solve_stage.rs`, `carries_hidden`). Scaled from 16:1, a 3 mm cube with
