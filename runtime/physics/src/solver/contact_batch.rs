@@ -859,7 +859,14 @@ impl<const N: usize, M: ManifoldRows, L: Levers<N>> ContactBatch<N, M, L> {
         let slide1 = old1 - self.slide_mass * vt1;
         let slide2 = old2 - self.slide_mass * vt2;
         let len2 = slide1 * slide1 + slide2 * slide2;
-        let clamp = len2.simd_gt(max_f2).select(max_f / len2.sqrt(), F::ONE);
+        // The square root and division only where some lane slides past the bound (in a
+        // resting pile, nearly none: they were a tenth of the 20-row pyramid's solve).
+        let over = len2.simd_gt(max_f2);
+        let clamp = if over.any() {
+            over.select(max_f / len2.sqrt(), F::ONE)
+        } else {
+            F::ONE
+        };
         let sliding = (stick1 * stick1 + stick2 * stick2).simd_gt(max_f2);
         let l1 = sliding.select(slide1 * clamp, stick1);
         let l2 = sliding.select(slide2 * clamp, stick2);
