@@ -94,6 +94,15 @@ impl ContactPair {
         self.manifolds.iter().map(|m| m.points.len()).sum()
     }
 
+    /// Both friction coefficients below `solver::LEVEL_MAX_FRICTION`: the pair's faces are
+    /// levelled and keep their normal (`narrow_phase::FRICTIONLESS_NORMAL_HOLD_ANGLE`), and a
+    /// heavy body on a light one is solved on the true masses
+    /// (`heavy_on_light::support_mass_scale`).
+    #[inline]
+    pub(crate) fn frictionless(&self) -> bool {
+        self.static_friction.max(self.dynamic_friction) < crate::solver::LEVEL_MAX_FRICTION
+    }
+
     /// Restitution 1 and no friction: the pair's contacts can do no work (see
     /// `solver::elastic_energy`).
     #[inline]

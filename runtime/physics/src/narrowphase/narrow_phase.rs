@@ -412,8 +412,7 @@ impl NarrowPhase {
             // A frictionless face keeps its normal through a small turn (see
             // `FRICTIONLESS_NORMAL_HOLD_ANGLE`) and its points where they are (see
             // `RawManifold::reduce`).
-            let frictionless =
-                pair.static_friction.max(pair.dynamic_friction) < crate::solver::LEVEL_MAX_FRICTION;
+            let frictionless = pair.frictionless();
             let holds = frictionless && !ba.kinematic && !bb.kinematic;
             let from = if frictionless {
                 ReduceFrom::Outermost

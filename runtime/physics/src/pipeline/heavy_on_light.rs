@@ -8,7 +8,6 @@ use glam::Vec3;
 use crate::narrowphase::contact_pair::ContactPair;
 use crate::physics_settings::PhysicsSettings;
 use crate::solver::body_state::BodyState;
-use crate::solver::contact_batch::LEVEL_MAX_FRICTION;
 use crate::solver::contact_constraint::ManifoldRef;
 
 /// Inverse-mass factors for manifold `r` of `pair` (bodies as solver indices into
@@ -24,11 +23,11 @@ use crate::solver::contact_constraint::ManifoldRef;
 /// body then passes on less of the heavy one's weight than it carries (its own support
 /// holds less than the full load: [`HiddenLoads`] gives its friction the rest), so this is
 /// kept to a heavy body resting on a light one: impacts, and light bodies on heavy ones,
-/// use the true masses. So do elastic pairs ([`ContactPair::elastic`]), whose energy is
-/// kept on the true masses' (scaled at ratio 3, 50 elastic balls of masses up to 250:1
-/// changed their energy by 22 % at fast), and frictionless ones: scaled, the heavy body
-/// takes every impulse the light one is spared, a pull and push that are not equal and
-/// opposite and do work as the pair rocks (a frictionless 3 cm cube on a 1 cm one, 27:1,
+/// use the true masses. So do frictionless pairs ([`ContactPair::frictionless`]), the
+/// elastic ones among them, whose energy is kept on the true masses' (scaled at ratio 3, 50
+/// elastic balls of masses up to 250:1 changed their energy by 22 % at fast), and the
+/// others because, scaled, the heavy body takes every impulse the light one is spared, a
+/// pull and push that are not equal and opposite and do work as the pair rocks (a frictionless 3 cm cube on a 1 cm one, 27:1,
 /// slid off it at fast, a 3 mm one off a 1 mm one at balanced; `examples/larger_on_smaller`
 /// in the physics bench). Solved on the true masses, a frictionless heavy body on a light
 /// one is a column (`contact_batch::column_face`), whose faces the coarse correction solves
@@ -58,8 +57,7 @@ pub(crate) fn support_mass_scale(
     }
     let gravity = settings.gravity;
     let g = gravity.length();
-    if !(max_ratio >= 1.0 && g > 0.0) || pair.elastic() || pair.static_friction < LEVEL_MAX_FRICTION
-    {
+    if !(max_ratio >= 1.0 && g > 0.0) || pair.frictionless() {
         return [1.0; 2];
     }
     let n = pair.manifolds[r.manifold as usize].normal;
