@@ -65,9 +65,11 @@ pub struct PhysicsSettings {
     /// this many times lighter (see `pipeline/heavy_on_light.rs`). Only pairs with friction
     /// past the larger of this and `3 · (substeps · solver_iterations)²` (48 at balanced and
     /// precise, 12 at fast) are scaled: Gauss–Seidel catches a lighter ratio within its step,
-    /// and scaling it rocks a small light body (a 2 mm cube on a 1 mm one fell). Impacts,
-    /// elastic and frictionless pairs use the true masses; the friction under the light body
-    /// is given the load the scaling keeps from it.
+    /// and scaling it rocks a small light body (a 2 mm cube on a 1 mm one fell). A heavy body
+    /// resting through a face on a light one, each on that one face, is not scaled but
+    /// solved on the true masses as a column (past the same ratio, and not with 0); impacts,
+    /// elastic and frictionless pairs use the true masses; the friction under a scaled light
+    /// body is given the load the scaling keeps from it.
     /// Default: `3`
     /// Too high (or 0, off): a heavy body on a light one rings into it for `√ratio`
     /// substeps and sinks about `g·ratio·h²` (17 cm for 1000:1 at balanced), and at fast an

@@ -10,7 +10,8 @@ use common::*;
 use onyx_physics::glam::Vec3;
 use onyx_physics::RigidBodyDesc;
 use onyx_physics::{
-    BodyHandle, ColliderDesc, OverloadedContact, PhysicsPreset, PhysicsSettings, PhysicsWorld,
+    BodyHandle, ColliderDesc, Material, OverloadedContact, PhysicsPreset, PhysicsSettings,
+    PhysicsWorld,
 };
 
 fn settings(p: PhysicsPreset) -> PhysicsSettings {
@@ -30,15 +31,30 @@ fn heavy_on_light_world(
     light_half: f32,
     heavy_half: f32,
 ) -> (PhysicsWorld, BodyHandle, BodyHandle, f32) {
+    heavy_on_light_world_of(p, ratio, light_half, heavy_half, Material::default())
+}
+
+/// [`heavy_on_light_world`] with every collider of `material`.
+fn heavy_on_light_world_of(
+    p: PhysicsPreset,
+    ratio: f32,
+    light_half: f32,
+    heavy_half: f32,
+    material: Material,
+) -> (PhysicsWorld, BodyHandle, BodyHandle, f32) {
     let mut w = PhysicsWorld::new(settings(p));
     let ground = w.insert_body(RigidBodyDesc::fixed());
     w.insert_collider(
-        ColliderDesc::cuboid(20.0, 0.5, 20.0).translation(Vec3::Y * -0.5),
+        ColliderDesc::cuboid(20.0, 0.5, 20.0)
+            .translation(Vec3::Y * -0.5)
+            .material(material),
         ground,
     );
     let light = w.insert_body(RigidBodyDesc::dynamic().translation(Vec3::Y * light_half));
     w.insert_collider(
-        ColliderDesc::cuboid(light_half, light_half, light_half).density(1000.0),
+        ColliderDesc::cuboid(light_half, light_half, light_half)
+            .density(1000.0)
+            .material(material),
         light,
     );
     let m_light = w.body(light).unwrap().mass();
@@ -46,16 +62,29 @@ fn heavy_on_light_world(
     let heavy = w.insert_body(RigidBodyDesc::dynamic().translation(Vec3::Y * y0));
     let volume = (2.0 * heavy_half).powi(3);
     w.insert_collider(
-        ColliderDesc::cuboid(heavy_half, heavy_half, heavy_half).density(ratio * m_light / volume),
+        ColliderDesc::cuboid(heavy_half, heavy_half, heavy_half)
+            .density(ratio * m_light / volume)
+            .material(material),
         heavy,
     );
     (w, light, heavy, y0)
 }
 
-/// [`heavy_on_light_world`] run for 5 s. Returns how far the heavy cube sank from where it
+/// [`heavy_on_light_world`] with friction `friction` run for 5 s. Returns how far the heavy cube sank from where it
 /// was placed (worst over the run, and at the end), metres.
-fn heavy_on_light(p: PhysicsPreset, ratio: f32, light_half: f32, heavy_half: f32) -> (f32, f32) {
-    let (mut w, _, heavy, y0) = heavy_on_light_world(p, ratio, light_half, heavy_half);
+fn heavy_on_light(
+    p: PhysicsPreset,
+    ratio: f32,
+    light_half: f32,
+    heavy_half: f32,
+    friction: f32,
+) -> (f32, f32) {
+    let material = Material {
+        static_friction: friction,
+        dynamic_friction: friction,
+        ..Material::default()
+    };
+    let (mut w, _, heavy, y0) = heavy_on_light_world_of(p, ratio, light_half, heavy_half, material);
     let mut worst = 0.0f32;
     for _ in 0..(5.0 / w.settings().dt) as usize {
         w.step();
@@ -64,25 +93,32 @@ fn heavy_on_light(p: PhysicsPreset, ratio: f32, light_half: f32, heavy_half: f32
     (worst, y0 - w.body(heavy).unwrap().translation().y)
 }
 
+/// The issue's targets: less than 1 cm at precise and 2 cm at balanced, for ratios up to
+/// 1000:1, with friction and without. Frictionless, solved on the true masses as a plain
+/// column, 1000:1 on 1 m cubes sank 4 cm (2 cm a face, the whole depth budget): a heavy
+/// body's column is now stiffened for a share of it (`HEAVY_COLUMN_DEPTH_SHARE`).
 #[test]
 fn a_heavy_box_on_a_light_box_barely_sinks() {
-    // The issue's targets: < 1 cm at precise, < 2 cm at balanced, for ratios up to 1000:1.
     for (preset, limit) in [
         (PhysicsPreset::Balanced, 0.02),
         (PhysicsPreset::Precise, 0.01),
     ] {
         for (light_half, heavy_half) in [(0.5f32, 0.5f32), (0.05, 0.5), (0.5, 0.05)] {
-            for ratio in [1.0f32, 10.0, 100.0, 400.0, 1000.0] {
-                let (worst, end) = heavy_on_light(preset, ratio, light_half, heavy_half);
+            for (ratio, friction) in [1.0f32, 10.0, 100.0, 400.0, 1000.0]
+                .into_iter()
+                .flat_map(|r| [(r, Material::default().dynamic_friction), (r, 0.0)])
+            {
+                let (worst, end) = heavy_on_light(preset, ratio, light_half, heavy_half, friction);
                 println!(
-                    "{preset} {ratio}:1, cubes {} m on {} m: sank {end:.4} m (worst {worst:.4}), \
-                     expected < {limit}",
+                    "{preset} {ratio}:1, friction {friction}, cubes {} m on {} m: sank {end:.4} \
+                     m (worst {worst:.4}), expected < {limit}",
                     2.0 * heavy_half,
                     2.0 * light_half
                 );
                 assert!(
                     worst < limit && end.abs() < limit,
-                    "{preset}: a {ratio}:1 box sank {worst} m (end {end}), expected < {limit}"
+                    "{preset}: a {ratio}:1 box, friction {friction}, sank {worst} m (end {end}), \
+                     expected < {limit}"
                 );
             }
         }
@@ -441,7 +477,10 @@ fn slide(
 /// the load to the ground through friction at both faces; it must neither slide nor tip.
 /// At fast, from 10:1 up the light box tipped over on its edge (the heavy one's off-centre
 /// load rang on it for the one iteration a substep); `max_support_mass_ratio` 3 (was 10)
-/// solves such a pair as 3:1, which holds.
+/// solved such a pair as 3:1, which held. Past the scaling onset the pair is now a heavy
+/// body's column on the true masses (`heavy_on_light::SupportMass::Column`): damped for the
+/// light box alone, its ground face let the 1000:1 pair on the incline rock past tipping at
+/// balanced and throw the light box out; it is damped for the column it carries.
 #[test]
 fn a_heavy_box_on_a_light_one_holds_when_loaded_sideways_from_above() {
     for preset in PhysicsPreset::ALL {
@@ -482,10 +521,13 @@ fn a_heavy_box_on_a_light_one_holds_when_loaded_sideways_from_above() {
 }
 
 /// A light box (and a column of two) under a heavy one, the bottom box pushed sideways:
-/// the ground's friction must hold the whole column's weight. The heavy-on-light scaling
-/// (`support_mass_scale`) solves the light box as if it were `max_support_mass_ratio` (3)
-/// times lighter than the heavy one, so the normal rows under a column of `n` light boxes
-/// carry only about `(n + ratio)·m·g`. The push is 30 % of what the ground's sliding
+/// the ground's friction must hold the whole column's weight. Where the heavy-on-light
+/// scaling (`support_mass_scale`) solves the light box as if it were
+/// `max_support_mass_ratio` (3) times lighter than the heavy one, the normal rows under a
+/// column of `n` light boxes carry only about `(n + ratio)·m·g` (past the scaling onset
+/// these columns are now solved on the true masses, `SupportMass::Column`, where the column
+/// of two slid 2.6 cm at fast, 1000:1, until the face under the light box the heavy one
+/// rests on was taken into its column too). The push is 30 % of what the ground's sliding
 /// friction holds under the column, but at most `0.6·(n + ratio)·m·g`, more than those
 /// rows' own friction holds (`0.5·(n + ratio)·m·g`) and less than tips the light box (see
 /// the ignored test below). Before the hidden load was given to the friction of the

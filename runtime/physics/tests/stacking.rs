@@ -712,7 +712,11 @@ fn assert_columns_hold<S: std::fmt::Display>(columns: &[(S, f32, Vec<Level>)]) {
 /// pairs are no longer scaled: they are columns, whose faces stiffen as far as their budget
 /// asks, `Softness::column_lift`). Columns of 1, 2 and 3 mm cubes and of 3, 6 and 9 mm ones
 /// fell at balanced while the face under each light cube was levelled
-/// (`heavy_on_light::PinchedBodies`).
+/// (`heavy_on_light::PinchedBodies`). Scaled past 48:1, a 1 cm cube with friction on a 1 mm
+/// one drifted 7 % of its size and sank 16 % into it at balanced, and a 4 cm one on a 1 cm
+/// one drifted 4.5 %: such pairs are now a heavy body's column on the true masses, whose
+/// coarse correction takes the friction of the light cube's two faces
+/// (`heavy_on_light::SupportMass::Column`, `solver::column_solve`).
 #[test]
 fn a_larger_box_on_a_smaller_one_holds_and_stays_put() {
     let columns: &[&[f32]] = &[
@@ -731,6 +735,12 @@ fn a_larger_box_on_a_smaller_one_holds_and_stays_put() {
         &[1.0, 2.0],
         &[1.0, 2.5],
         &[1.0, 3.0],
+        // Past the onset (48:1 at balanced and precise): heavy columns.
+        &[0.001, 0.01],
+        &[0.01, 0.04],
+        &[0.01, 0.1],
+        &[0.1, 1.0],
+        &[1.0, 10.0],
     ];
     // Frictionless: each cube twice the one below (8:1 a face), and 27:1 to 1000:1 on a
     // 1 mm, 1 cm, 10 cm and 1 m cube (solved on the true masses).
@@ -768,12 +778,19 @@ fn a_larger_box_on_a_smaller_one_holds_and_stays_put() {
 /// `overloaded_contacts`.) Scaled from 4:1, the 8:1 pairs with friction rocked at 3 Hz and
 /// fell from 1 mm to 10 cm, and the frictionless 27:1 and 1000:1 ones slid off from 1 mm to
 /// 10 cm (`heavy_on_light::support_mass_scale`, `examples/larger_on_smaller` in the physics
-/// bench).
+/// bench). Scaled past 12:1, a 3 mm cube with friction fell off a 1 mm one and a 30 cm cube
+/// off a 10 cm one, rocking at 2–3 Hz: they are now a heavy body's column on the true masses
+/// (`heavy_on_light::SupportMass::Column`). With friction, 1000:1 is asked from 1 cm up: a
+/// 1 cm cube on a 1 mm one at fast is overloaded and named (it sinks 12 % there).
 #[test]
 fn a_larger_box_on_a_smaller_one_stands_at_fast() {
     let mut cases: Vec<(f32, f32, f32)> = Vec::new();
     for lower in [0.001, 0.01, 0.1, 1.0] {
         cases.push((0.5, lower, 2.0));
+        cases.push((0.5, lower, 3.0));
+        if lower > 0.001 {
+            cases.push((0.5, lower, 10.0));
+        }
         for ratio in [2.0, 3.0, 10.0] {
             cases.push((0.0, lower, ratio));
         }

@@ -122,6 +122,22 @@ impl ColumnSupports {
         self.column_lengths.get(body as usize).copied().unwrap_or(1)
     }
 
+    /// The dynamic bodies under solver body `body` down its column, as
+    /// [`Self::down_from`] walks them.
+    pub fn column_below(
+        &mut self,
+        body: u32,
+        manifolds: &[ManifoldRef],
+        pairs: &[ContactPair],
+        gravity: Vec3,
+        bodies: usize,
+    ) -> impl Iterator<Item = usize> + '_ {
+        if !self.counted {
+            self.count(manifolds, pairs, gravity);
+        }
+        Self::down_from(&self.counts, &self.below, body as usize, bodies)
+    }
+
     /// The dynamic bodies under solver body `top` down its column: each one the body above
     /// rests on through its one support face, ending with the first that rests on more or
     /// none (the column's base), at most [`MAX_COLUMN_WALK`].
@@ -190,14 +206,8 @@ impl ColumnSupports {
             let Some(pair) = pairs.get(r.pair as usize) else {
                 continue;
             };
-            let Some(m) = pair.manifolds.get(r.manifold as usize) else {
-                continue;
-            };
-            let touching = touching_distance(pair.size, pair.reach);
-            if r.count > 1
-                && m.normal.dot(up).abs() > SUPPORT_MIN_COS
-                && m.points.iter().any(|p| p.separation <= touching)
-            {
+            if is_support(r, pair, up) {
+                let m = &pair.manifolds[r.manifold as usize];
                 let (upper, lower) = upper_lower(gravity, m.normal, r.body_a, r.body_b);
                 let upper = upper as usize;
                 if self.counts.len() <= upper {
@@ -209,4 +219,17 @@ impl ColumnSupports {
             }
         }
     }
+}
+
+/// Whether manifold `r` of `pair` is a support face: two points or more, touching, its
+/// normal within [`SUPPORT_MIN_COS`] of `up` (against gravity, unit; a speculative face two
+/// cubes up, or a wall, is not one).
+pub(crate) fn is_support(r: &ManifoldRef, pair: &ContactPair, up: Vec3) -> bool {
+    let Some(m) = pair.manifolds.get(r.manifold as usize) else {
+        return false;
+    };
+    let touching = touching_distance(pair.size, pair.reach);
+    r.count > 1
+        && m.normal.dot(up).abs() > SUPPORT_MIN_COS
+        && m.points.iter().any(|p| p.separation <= touching)
 }

@@ -5,60 +5,74 @@
 
 use glam::Vec3;
 
+use super::column_supports::{is_support, ColumnSupports};
 use crate::narrowphase::contact_pair::ContactPair;
 use crate::physics_settings::PhysicsSettings;
 use crate::solver::body_state::BodyState;
 use crate::solver::contact_constraint::ManifoldRef;
 
-/// Inverse-mass factors for manifold `r` of `pair` (bodies as solver indices into
-/// `states`) in which a dynamic body rests on one more than [`scaling_onset`] times lighter
-/// (the heavy one above it along gravity, the two approaching slower than gravity's pull
-/// over one step): the light body's inverse mass and inertia are scaled so that the contact
-/// sees at most `max_support_mass_ratio`.
+/// How the solver takes manifold `r` (bodies as solver indices into `states`) in which a
+/// dynamic body rests on one more than [`scaling_onset`] times lighter (the heavy one above
+/// it along gravity, the two approaching slower than gravity's pull over one step).
 ///
 /// Gauss–Seidel with warm starting builds a contact's impulse by about the light body's
 /// momentum per substep, so a body `r` times heavier is caught only after `√r` substeps of
 /// ringing: it sinks about `g·r·h²` (17 cm for 1000:1 at 240 Hz), whatever the contact's
-/// stiffness. Seen at the ratio, the ringing is `√(r / ratio)` times shorter. The light
-/// body then passes on less of the heavy one's weight than it carries (its own support
-/// holds less than the full load: [`HiddenLoads`] gives its friction the rest), so this is
-/// kept to a heavy body resting on a light one: impacts, and light bodies on heavy ones,
-/// use the true masses. So do frictionless pairs ([`ContactPair::frictionless`]), the
-/// elastic ones among them, whose energy is kept on the true masses' (scaled at ratio 3, 50
-/// elastic balls of masses up to 250:1 changed their energy by 22 % at fast), and the
-/// others because, scaled, the heavy body takes every impulse the light one is spared, a
-/// pull and push that are not equal and opposite and do work as the pair rocks (a frictionless 3 cm cube on a 1 cm one, 27:1,
-/// slid off it at fast, a 3 mm one off a 1 mm one at balanced; `examples/larger_on_smaller`
-/// in the physics bench). Solved on the true masses, a frictionless heavy body on a light
-/// one is a column (`contact_batch::column_face`), whose faces the coarse correction solves
-/// as a whole and which stiffen as far as their budget asks (their cap lifted for the load
-/// they carry, `Softness::column_lift`): 1000:1 holds within 2 % at balanced and precise and
-/// 2.7 % at fast. With friction, past [`scaling_onset`], the light body on its true mass is
-/// still squeezed out from between its two faces (a 1 cm cube under a 4 cm one, 64:1, at
-/// fast, and under a 10 cm one, 1000:1, at every preset): those pairs are scaled.
+/// stiffness. Two remedies, by what the pair rests on:
+///
+/// - **A column** ([`SupportMass::Column`]): where the manifold is a face (two points or
+///   more) and each body rests on that one face alone (the light body on its own support),
+///   the pair is solved on the true masses as a column face, and so are the faces down the
+///   column under it ([`HiddenLoads::carries_heavy_column`]): the coarse correction solves
+///   the light body's two faces together, exactly, their friction with them
+///   (`solver::column_solve`); they stiffen for [`HEAVY_COLUMN_DEPTH_SHARE`] of the depth
+///   budget and are damped for the whole column they carry. Momentum is kept and the
+///   support carries the whole load. Scaled instead (below), the heavy body takes
+///   every impulse the light one is spared, a pull and push that are not equal and
+///   opposite and do work as the pair rocks: a 30 cm cube with friction on a 10 cm one
+///   (27:1) rocked at 2–3 Hz and fell at fast, 1 mm ones under 3 mm and 1 cm ones fell
+///   through at fast, and a 1 cm cube under a 10 cm one drifted 7 % of its size at
+///   balanced; as columns each stands within 2 % (`examples/larger_on_smaller` in the
+///   physics bench; before friction was in the coarse correction a light body on its true
+///   mass was squeezed out from between its two friction faces, its tilt whirling).
+/// - **Scaled** ([`SupportMass::Scaled`]): elsewhere (a heavy plank on two light cubes, a
+///   light body resting on more than one face) the light body's inverse mass and inertia
+///   are scaled so that the contact sees at most `max_support_mass_ratio`: the ringing is
+///   `√(r / ratio)` times shorter. The light body then passes on less of the heavy one's
+///   weight than it carries (its own support holds less than the full load: [`HiddenLoads`]
+///   gives its friction the rest). Never for a frictionless pair
+///   ([`ContactPair::frictionless`]), the elastic ones among them, whose energy is kept on
+///   the true masses' (scaled at ratio 3, 50 elastic balls of masses up to 250:1 changed
+///   their energy by 22 % at fast), and the others because the unequal impulses made a
+///   frictionless 3 cm cube slide off a 1 cm one at fast.
+///
+/// Impacts, and light bodies on heavy ones, use the true masses ([`SupportMass::True`]).
 #[inline]
 pub(crate) fn support_mass_scale(
-    pair: &ContactPair,
     r: &ManifoldRef,
     states: &[BodyState],
     settings: &PhysicsSettings,
-) -> [f32; 2] {
+    supports: &mut ColumnSupports,
+    refs: &[ManifoldRef],
+    pairs: &[ContactPair],
+) -> SupportMass {
+    let pair = &pairs[r.pair as usize];
     let (a, b) = (&states[r.body_a as usize], &states[r.body_b as usize]);
     let max_ratio = settings.max_support_mass_ratio;
     let (ia, ib) = (a.inv_mass.max_element(), b.inv_mass.max_element());
     // Most pairs: masses within the ratio, or a static or kinematic body: nothing to do
     // (tested before the onset is computed: this runs for every manifold every step).
     if !(ia > ib * max_ratio || ib > ia * max_ratio) || ia == 0.0 || ib == 0.0 {
-        return [1.0; 2];
+        return SupportMass::True;
     }
     let onset = scaling_onset(settings);
     if !(ia > ib * onset || ib > ia * onset) {
-        return [1.0; 2];
+        return SupportMass::True;
     }
     let gravity = settings.gravity;
     let g = gravity.length();
-    if !(max_ratio >= 1.0 && g > 0.0) || pair.frictionless() {
-        return [1.0; 2];
+    if !(max_ratio >= 1.0 && g > 0.0) {
+        return SupportMass::True;
     }
     let n = pair.manifolds[r.manifold as usize].normal;
     // Resting: not approaching faster than gravity's pull over a step (16 cm/s at 60 Hz).
@@ -66,16 +80,62 @@ pub(crate) fn support_mass_scale(
     let b_above = gravity.dot(n) < 0.0;
     let resting = approach > -g * settings.dt;
     // The light body (larger inverse mass) must be the lower one.
-    if b_above && ia > ib * max_ratio && resting {
+    let factors = if b_above && ia > ib * max_ratio && resting {
         [ib * max_ratio / ia, 1.0]
     } else if !b_above && ib > ia * max_ratio && resting {
         [1.0, ia * max_ratio / ib]
     } else {
-        [1.0; 2]
+        return SupportMass::True;
+    };
+    if is_support(r, pair, -gravity / g)
+        && supports.single(r.body_a, refs, pairs, gravity)
+        && supports.single(r.body_b, refs, pairs, gravity)
+    {
+        SupportMass::Column
+    } else if pair.frictionless() {
+        SupportMass::True
+    } else {
+        SupportMass::Scaled(factors)
     }
 }
 
-/// Mass ratio past which [`support_mass_scale`] scales a resting pair: the larger of
+/// How [`support_mass_scale`] solves a manifold.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) enum SupportMass {
+    /// On the true masses.
+    True,
+    /// On the true masses, as a column face: a heavy body resting through a face on a light
+    /// one, each resting on that face alone (see [`HiddenLoads::carries_heavy_column`]).
+    Column,
+    /// With these factors on the inverse masses and inertias of A and B.
+    Scaled([f32; 2]),
+}
+
+impl SupportMass {
+    /// The factors on the inverse masses and inertias of A and B.
+    #[inline]
+    pub(crate) fn factors(self) -> [f32; 2] {
+        match self {
+            Self::Scaled(f) => f,
+            Self::True | Self::Column => [1.0; 2],
+        }
+    }
+}
+
+/// Share of the depth budget (`PhysicsSettings::max_penetration_fraction` of the smaller
+/// body's size) that the faces of a heavy body's column on a light one
+/// ([`SupportMass::Column`]) are stiffened to hold. The heavy body sinks through two faces,
+/// each of them stiffened only as far as its load asks: at the whole budget a 1 m cube
+/// 1000 times heavier than the 1 m cube under it sank 4 cm (2 cm a face) at every preset,
+/// where the issue asks less than 2 cm at balanced and 1 cm at precise
+/// (`tests/heavy_and_small.rs`). Bounded `(0, 1]`: at 0.25 it sank 1.0 cm; at 0.1, 4 mm
+/// at every preset, and columns of a larger cube on a smaller one stand alike at 0.1 and
+/// 0.2 (`examples/larger_on_smaller`); a stiffer face reaches its cap sooner (its
+/// `Softness::column_lift`), and overloads are still named against the whole budget.
+pub const HEAVY_COLUMN_DEPTH_SHARE: f32 = 0.1;
+
+/// Mass ratio past which [`support_mass_scale`] takes a resting pair for a heavy body's
+/// column or scales it: the larger of
 /// `max_support_mass_ratio` and [`ONSET_PER_SQUARED_SWEEP`] times the square of the step's
 /// Gauss–Seidel sweeps (`substeps · solver_iterations`; 48 at balanced and precise, 12 at
 /// fast).
@@ -83,7 +143,8 @@ pub(crate) fn support_mass_scale(
 /// A body `r` times heavier is caught after about `√r` sweeps (see [`support_mass_scale`]),
 /// so up to about the square of the sweeps it is caught within the step it lands, and from
 /// then on the warm-started impulse carries it (from its first step,
-/// `solve_stage::NEW_FACE_STEPS`). Scaling there only did harm: a light body that passes on
+/// `solve_stage::NEW_FACE_STEPS`). Scaling there only did harm (measured before such pairs
+/// were columns): a light body that passes on
 /// less of the heavy one's weight than it carries is rocked by it, at the sizes where a
 /// rocking mode is fast next to the substep. Scaled from 3:1, a 2 mm cube on a 1 mm one
 /// (8:1) fell off it at balanced and precise, and a 1.5 cm or 2 cm cube on a 1 cm one
@@ -103,11 +164,9 @@ pub(crate) fn scaling_onset(settings: &PhysicsSettings) -> f32 {
 /// 2 cm on 1 cm and 3 mm on 1 mm at balanced and precise (27:1 past 16:1); from 2 they stand
 /// (`examples/larger_on_smaller` in the physics bench: 7 → 2 of 12 fell at fast with friction,
 /// 1 → 0 at balanced and precise), at 3 the same, away from the 8:1 of cubes twice the size.
-/// Past the onset, unscaled, a light body with friction is squeezed out from between its two
-/// faces (a 1 cm cube under a 4 cm one, 64:1, at fast, and under a 10 cm one at every
-/// preset); at 8 (128:1 at balanced) a 100:1 pair of 1 m cubes sank 2.6 cm there, past
-/// the issue's 2 cm (`tests/heavy_and_small.rs`). A pair 10:1 loaded sideways at fast holds
-/// either way.
+/// (Past the onset such pairs were scaled then; at 8, 128:1 at balanced, a 100:1 pair of
+/// 1 m cubes, solved on the true masses as a plain contact, sank 2.6 cm, past the issue's
+/// 2 cm, `tests/heavy_and_small.rs`.) A pair 10:1 loaded sideways at fast holds either way.
 pub const ONSET_PER_SQUARED_SWEEP: f32 = 3.0;
 
 /// The two bodies of a manifold with normal `n` (from `a` to `b`) as (upper, lower): the one
@@ -123,7 +182,8 @@ pub(crate) fn upper_lower(gravity: Vec3, n: Vec3, a: u32, b: u32) -> (u32, u32) 
 
 /// Per solver body, the factor on the friction bound of the contacts it rests on: 1 but
 /// under a light body that [`support_mass_scale`] scales (and under whatever that body
-/// rests on, down to the ground).
+/// rests on, down to the ground); and whether it carries a heavy body's column
+/// ([`HiddenLoads::carries_heavy_column`]).
 ///
 /// Scaled by `s`, a light body takes only `s·P` of the impulse `P` the heavy body presses on
 /// it, and passes only that on to its own supports: their normal impulse, and with it their
@@ -152,6 +212,10 @@ pub(crate) struct HiddenLoads {
     hidden: Vec<f32>,
     carried: Vec<f32>,
     supports: Vec<(f32, u32, u32, f32)>,
+    /// Per solver body, whether a heavy body rests on it as a column
+    /// ([`SupportMass::Column`]), or on a body it holds up down its column; empty when none
+    /// does.
+    carries_heavy_column: Vec<bool>,
 }
 
 impl HiddenLoads {
@@ -159,6 +223,7 @@ impl HiddenLoads {
     /// another).
     pub(crate) fn clear(&mut self) {
         self.factor.clear();
+        self.carries_heavy_column.clear();
     }
 
     /// Over the step's manifolds `refs` (bodies as solver indices into `states`), with the
@@ -170,9 +235,11 @@ impl HiddenLoads {
         pairs: &[ContactPair],
         states: &[BodyState],
         settings: &PhysicsSettings,
+        columns: &mut ColumnSupports,
         height: impl Fn(u32) -> f32,
     ) {
         self.factor.clear();
+        self.carries_heavy_column.clear();
         // A manifold's warm-started load (an impact's impulse is not one).
         let load = |r: &ManifoldRef| -> f32 {
             let m = &pairs[r.pair as usize].manifolds[r.manifold as usize];
@@ -188,8 +255,23 @@ impl HiddenLoads {
         hidden.resize(states.len(), 0.0);
         let mut any = false;
         for r in refs {
-            let scale = support_mass_scale(&pairs[r.pair as usize], r, states, settings);
-            for (s, body) in scale.into_iter().zip([r.body_a, r.body_b]) {
+            let support = support_mass_scale(r, states, settings, columns, refs, pairs);
+            if support == SupportMass::Column {
+                let normal = pairs[r.pair as usize].manifolds[r.manifold as usize].normal;
+                let (_, lower) = upper_lower(settings.gravity, normal, r.body_a, r.body_b);
+                if self.carries_heavy_column.is_empty() {
+                    self.carries_heavy_column.resize(states.len(), false);
+                }
+                self.carries_heavy_column[lower as usize] = true;
+                // And the bodies it rests on down its column, which carry the heavy body
+                // too.
+                for below in
+                    columns.column_below(lower, refs, pairs, settings.gravity, states.len())
+                {
+                    self.carries_heavy_column[below] = true;
+                }
+            }
+            for (s, body) in support.factors().into_iter().zip([r.body_a, r.body_b]) {
                 if s < 1.0 {
                     hidden[body as usize] += (1.0 - s) * load(r);
                     any = true;
@@ -231,6 +313,17 @@ impl HiddenLoads {
                     1.0
                 }
             }));
+    }
+
+    /// Whether solver body `body` carries a heavy body's column ([`SupportMass::Column`]):
+    /// the heavy body rests on it, or on a body it holds up through one face each. The face
+    /// `body` rests on is a face of that column.
+    #[inline]
+    pub(crate) fn carries_heavy_column(&self, body: u32) -> bool {
+        self.carries_heavy_column
+            .get(body as usize)
+            .copied()
+            .unwrap_or(false)
     }
 
     /// The factor on the friction bound of the contacts solver body `body` rests on.

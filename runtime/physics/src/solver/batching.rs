@@ -331,6 +331,7 @@ mod tests {
                 restitution: 0.0,
                 elastic: false,
                 column: false,
+                column_friction: false,
                 bounce_accel: 0.0,
                 pressing: [Vec3A::ZERO; 2],
                 load_level_share: 0.0,

@@ -24,7 +24,7 @@
 use glam::Vec3A;
 
 use super::body_state::BodyState;
-use super::column_solve::{ColumnFace, ColumnRows};
+use super::column_solve::{ColumnFace, ColumnRows, FrictionLevers};
 use super::contact_constraint::PreparedManifold;
 use super::face_contact::FaceContact;
 use super::lanes::{
@@ -432,6 +432,9 @@ pub(crate) struct ContactBatch<const N: usize, M: ManifoldRows, L: Levers<N>> {
     elastic: u8,
     /// Bit `l`: lane `l` is a column face (`ContactConstraint::column`).
     column: u8,
+    /// Bit `l`: lane `l`'s friction is solved in its column's coarse correction
+    /// (`ContactConstraint::column_friction`).
+    column_friction: u8,
     inv_mass_a: V3,
     inv_mass_b: V3,
     normal: V3,
@@ -507,6 +510,7 @@ impl<const N: usize, M: ManifoldRows, L: Levers<N>> ContactBatch<N, M, L> {
         writes_b: 0,
         elastic: 0,
         column: 0,
+        column_friction: 0,
         inv_mass_a: V3::ZERO,
         inv_mass_b: V3::ZERO,
         normal: V3::ZERO,
@@ -546,6 +550,7 @@ impl<const N: usize, M: ManifoldRows, L: Levers<N>> ContactBatch<N, M, L> {
         self.writes_b |= ((c.writes >> 1) & 1) << l;
         self.elastic |= u8::from(c.elastic) << l;
         self.column |= u8::from(c.column) << l;
+        self.column_friction |= u8::from(c.column_friction) << l;
         self.inv_mass_a
             .set(l, states[c.body_a as usize].inv_mass * c.mass_scale[0]);
         self.inv_mass_b
@@ -833,6 +838,16 @@ impl<const N: usize, M: ManifoldRows, L: Levers<N>> ContactBatch<N, M, L> {
         Self::scatter(states, &self.body_b, self.writes_b, b);
     }
 
+    /// B's velocity relative to A's along the two tangents at the manifold centre.
+    #[inline(always)]
+    fn tangent_velocity(&self, a: &Velocities, b: &Velocities) -> [F; 2] {
+        let dv = b.v - a.v;
+        std::array::from_fn(|k| match self.levers.rows() {
+            Some(rows) => dv.dot(self.tangent[k]) + b.w.dot(rows.rt_b[k]) - a.w.dot(rows.rt_a[k]),
+            None => dv.dot(self.tangent[k]),
+        })
+    }
+
     /// Coulomb friction in the contact plane (exact 2×2 mass while sticking, isotropic while
     /// sliding), then the layout's twist friction, at the manifold centre.
     #[inline(always)]
@@ -844,14 +859,7 @@ impl<const N: usize, M: ManifoldRows, L: Levers<N>> ContactBatch<N, M, L> {
         let max_f = self.friction * total;
         let max_f2 = max_f * max_f;
         let [t1, t2] = self.tangent;
-        let dv = b.v - a.v;
-        let (vt1, vt2) = match self.levers.rows() {
-            Some(rows) => (
-                dv.dot(t1) + b.w.dot(rows.rt_b[0]) - a.w.dot(rows.rt_a[0]),
-                dv.dot(t2) + b.w.dot(rows.rt_b[1]) - a.w.dot(rows.rt_a[1]),
-            ),
-            None => (dv.dot(t1), dv.dot(t2)),
-        };
+        let [vt1, vt2] = self.tangent_velocity(a, b);
         let m = self.tangent_mass;
         let [old1, old2] = self.tangent_impulse;
         let stick1 = old1 - (m[0] * vt1 + m[1] * vt2);
@@ -1033,6 +1041,19 @@ impl<L: Levers<4>> ContactBatch<4, FaceContact, L> {
             ),
             None => ([zero; 2], [zero; 2]),
         };
+        let with_friction = (self.column_friction >> l) & 1 != 0;
+        let friction = (with_friction && self.friction.to_array()[l] > 0.0).then(|| {
+            match self.levers.rows() {
+                Some(rows) => FrictionLevers {
+                    rt: [rows.rt_a.map(|v| lane(&v)), rows.rt_b.map(|v| lane(&v))],
+                    irt: [rows.irt_a.map(|v| lane(&v)), rows.irt_b.map(|v| lane(&v))],
+                },
+                None => FrictionLevers {
+                    rt: [[Vec3A::ZERO; 2]; 2],
+                    irt: [[Vec3A::ZERO; 2]; 2],
+                },
+            }
+        });
         Some(ColumnFace::new(
             [self.body_a[l], self.body_b[l]],
             [(self.writes_a >> l) & 1 != 0, (self.writes_b >> l) & 1 != 0],
@@ -1042,6 +1063,7 @@ impl<L: Levers<4>> ContactBatch<4, FaceContact, L> {
             active,
             rn,
             irn,
+            friction,
         ))
     }
 
@@ -1058,6 +1080,11 @@ impl<L: Levers<4>> ContactBatch<4, FaceContact, L> {
             compliance: [F::ZERO; 4],
             level_share: share,
             impulse: [F::ZERO; 4],
+            tangent_velocity: if self.column_friction != 0 {
+                self.tangent_velocity(&a, &b)
+            } else {
+                [F::ZERO; 2]
+            },
         };
         for k in 0..4 {
             let cp = &self.points[k];
@@ -1074,9 +1101,46 @@ impl<L: Levers<4>> ContactBatch<4, FaceContact, L> {
         out
     }
 
+    /// Adds `tangent` to the friction impulses (0 on lanes whose friction is not in a coarse
+    /// correction), held within the friction cone of the normal impulses, and moves the
+    /// bodies' velocities `a` and `b` by what was added.
+    fn add_column_friction(&mut self, a: &mut Velocities, b: &mut Velocities, tangent: [F; 2]) {
+        let mut total = F::ZERO;
+        for cp in &self.points {
+            total += cp.normal_impulse;
+        }
+        let max_f = self.friction * total;
+        let [old1, old2] = self.tangent_impulse;
+        let (mut new1, mut new2) = (old1 + tangent[0], old2 + tangent[1]);
+        let len2 = new1 * new1 + new2 * new2;
+        // Only the lanes the correction moves (a lane's own passes bound the rest).
+        let moved = tangent[0].simd_ne(F::ZERO) | tangent[1].simd_ne(F::ZERO);
+        let over = len2.simd_gt(max_f * max_f) & moved;
+        if over.any() {
+            let scale = over.select(max_f / len2.sqrt(), F::ONE);
+            new1 *= scale;
+            new2 *= scale;
+        }
+        self.tangent_impulse = [new1, new2];
+        let (d1, d2) = (new1 - old1, new2 - old2);
+        let p = self.tangent[0].scale(d1) + self.tangent[1].scale(d2);
+        a.v -= self.inv_mass_a * p;
+        b.v += self.inv_mass_b * p;
+        if let Some(rows) = self.levers.rows() {
+            a.w -= rows.irt_a[0].scale(d1) + rows.irt_a[1].scale(d2);
+            b.w += rows.irt_b[0].scale(d1) + rows.irt_b[1].scale(d2);
+        }
+    }
+
     /// Adds `impulse[k]` to point `k`'s normal impulse per lane (0 on lanes that are not
-    /// column faces), none below zero, and moves the bodies by what was added.
-    pub(crate) fn add_column_impulses(&mut self, states: &mut [BodyState], impulse: [F; 4]) {
+    /// column faces), none below zero, then `tangent` to the friction impulses (see
+    /// [`Self::add_column_friction`]), and moves the bodies by what was added.
+    pub(crate) fn add_column_impulses(
+        &mut self,
+        states: &mut [BodyState],
+        impulse: [F; 4],
+        tangent: [F; 2],
+    ) {
         let mut a = Self::gather(states, &self.body_a);
         let mut b = Self::gather(states, &self.body_b);
         let mut sum = F::ZERO;
@@ -1098,6 +1162,9 @@ impl<L: Levers<4>> ContactBatch<4, FaceContact, L> {
         if L::ANGULAR {
             a.w -= da;
             b.w += db;
+        }
+        if self.column_friction != 0 {
+            self.add_column_friction(&mut a, &mut b, tangent);
         }
         Self::scatter(states, &self.body_a, self.writes_a, a);
         Self::scatter(states, &self.body_b, self.writes_b, b);

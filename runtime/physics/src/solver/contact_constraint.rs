@@ -196,6 +196,10 @@ pub(crate) struct ContactConstraint {
     /// A face in a column that needs more passes than the step's iterations to hold its
     /// tilt (see `COLUMN_PASSES`): solved again after them.
     pub column: bool,
+    /// A column face whose friction the coarse correction solves with its normal rows
+    /// (`solver::column_solve`): one under or on a pinched body
+    /// (`pipeline::heavy_on_light::PinchedBodies`).
+    pub column_friction: bool,
     /// Relative normal acceleration of the bodies (gravity, forces), m/s², for restitution.
     pub bounce_accel: f32,
     /// Per side (A, B): where the body's own supports hold it, the unit direction its
