@@ -2,7 +2,7 @@
 
 use glam::{Vec3, Vec3A};
 
-use super::column_supports::ColumnSupports;
+use super::column_supports::{is_support, ColumnSupports};
 use super::heavy_on_light::{
     scaling_onset, support_mass_scale, upper_lower, SupportMass, HEAVY_COLUMN_DEPTH_SHARE,
     PINCHED_MASS_RATIO,
@@ -304,6 +304,7 @@ impl PhysicsWorld {
         self.output.counters.contacts = contacts;
 
         let g = s.gravity.length();
+        let up = -s.gravity.normalize_or_zero();
         let mass_of = |st: &BodyState| {
             let inv = st.inv_mass.max_element();
             if inv > 0.0 {
@@ -530,11 +531,13 @@ impl PhysicsWorld {
                 0.0
             };
             let budget = s.max_penetration_fraction * pair.size;
-            // A face of a heavy body's column on a light one (the heavy body's, and the
-            // light body's base) is stiffened for a share of the budget (see
-            // `HEAVY_COLUMN_DEPTH_SHARE`).
-            let heavy_column =
-                support_mass == SupportMass::Column || hidden.carries_heavy_column(upper);
+            // A face of a heavy body's column on a light one (the heavy body's, and each
+            // support face down the column under it) is stiffened for a share of the budget
+            // (see `HEAVY_COLUMN_DEPTH_SHARE`).
+            let heavy_column = support_mass == SupportMass::Column
+                || (hidden.carries_heavy_column(upper)
+                    && is_support(r, pair, up)
+                    && supports.single(upper, manifolds, pairs, s.gravity));
             let held_depth = if heavy_column {
                 HEAVY_COLUMN_DEPTH_SHARE * budget
             } else {
