@@ -26,7 +26,8 @@ use crate::solver::contact_constraint::ManifoldRef;
 ///   column under it ([`HiddenLoads::carries_heavy_column`]): the coarse correction solves
 ///   the light body's two faces together, exactly, their friction with them
 ///   (`solver::column_solve`); they stiffen for [`HEAVY_COLUMN_DEPTH_SHARE`] of the depth
-///   budget and are damped for the whole column they carry. Momentum is kept and the
+///   budget (no deeper than [`HEAVY_COLUMN_RESTING_DEPTHS`]), are damped for the whole
+///   column they carry and take every column pass. Momentum is kept and the
 ///   support carries the whole load. Scaled instead (below), the heavy body takes
 ///   every impulse the light one is spared, a pull and push that are not equal and
 ///   opposite and do work as the pair rocks: a 30 cm cube with friction on a 10 cm one
@@ -131,9 +132,24 @@ impl SupportMass {
 /// (`tests/heavy_and_small.rs`). Bounded `(0, 1]`: at 0.25 it sank 1.0 cm, at 0.15 6 mm;
 /// at 0.1 (4 mm) a 40 cm cube 1000 times heavier resting 10 cm off centre on another rocked
 /// at 4 Hz and tipped over at fast, its faces too stiff for the step, while from 0.15 up it
-/// stands (`examples/offset_heavy`). A stiffer face reaches its cap sooner (its
-/// `Softness::column_lift`); overloads are still named against the whole budget.
+/// stood (measured with two column passes a substep; `examples/offset_heavy`). A stiffer
+/// face reaches its cap sooner (its `Softness::column_lift`); overloads are still named
+/// against the whole budget. Large bodies are held further, by
+/// [`HEAVY_COLUMN_RESTING_DEPTHS`].
 pub const HEAVY_COLUMN_DEPTH_SHARE: f32 = 0.15;
+
+/// Most a face of a heavy body's column may sink, in depths of a body resting alone at the
+/// contact's base stiffness (`g / ω²`: 0.24 mm at the default 32 Hz between two dynamic
+/// bodies, 61 µm on a static one), where that is less than [`HEAVY_COLUMN_DEPTH_SHARE`] of
+/// the budget: large bodies. The bounds for a heavy body on a light one are
+/// absolute (2 cm at balanced, 1 cm at precise), and at 0.15 of the budget a 10 m cube
+/// 1000 times heavier than the 10 m cube under it sank 2.4 cm at balanced (two faces of
+/// 3 cm budget share each; `tests/e2e/physics_presets_cli.rs`); held to 20 such depths,
+/// 4.9 mm and 1.2 mm a face, it sinks 6 mm at balanced and precise (2.5 cm at fast, which
+/// has no such bound). Bounded `(0, ∞)`: a 40 cm pair held to 4 (1 mm, past 0.15 of its
+/// budget) rocked over at fast and at balanced when loaded 10 cm off centre
+/// (`examples/offset_heavy`).
+pub const HEAVY_COLUMN_RESTING_DEPTHS: f32 = 20.0;
 
 /// Mass ratio past which [`support_mass_scale`] takes a resting pair for a heavy body's
 /// column or scales it: the larger of
