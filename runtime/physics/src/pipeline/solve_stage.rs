@@ -760,22 +760,27 @@ impl PhysicsWorld {
                 0.0
             };
             // Not on a pinched body's support (see `PinchedBodies`): frictionless faces are
-            // levelled anyway.
-            c.load_level_share = if pinched.get(upper) && c.friction.friction >= LEVEL_MAX_FRICTION
-            {
-                0.0
-            } else if c.column {
-                chain(supports, final_hz).column_level_share()
-            } else if c.block.patch
-                && g > 0.0
-                && c.friction.friction >= LEVEL_MAX_FRICTION
-                && supports.single(upper, manifolds, pairs, s.gravity)
-                && supports.single(lower, manifolds, pairs, s.gravity)
-            {
-                for_load.max(chain(supports, used_hz).level_share())
-            } else {
-                for_load
-            };
+            // levelled anyway, and so are a heavy body's column's, whose coarse correction
+            // holds the light body's tilt from both faces at once (left unlevelled, two 1 mm
+            // cubes under a 1 cm one leaned over at balanced, their soft faces too soft in
+            // tilt for the load high on them, and two 1 cm ones under a 10 cm one were
+            // thrown apart at fast).
+            c.load_level_share =
+                if pinched.get(upper) && !heavy_column && c.friction.friction >= LEVEL_MAX_FRICTION
+                {
+                    0.0
+                } else if c.column {
+                    chain(supports, final_hz).column_level_share()
+                } else if c.block.patch
+                    && g > 0.0
+                    && c.friction.friction >= LEVEL_MAX_FRICTION
+                    && supports.single(upper, manifolds, pairs, s.gravity)
+                    && supports.single(lower, manifolds, pairs, s.gravity)
+                {
+                    for_load.max(chain(supports, used_hz).level_share())
+                } else {
+                    for_load
+                };
         };
         let mut overloads: Vec<Overload> = Vec::new();
         let prepare_one = |r: &ManifoldRef, out: &mut PreparedManifold| {
