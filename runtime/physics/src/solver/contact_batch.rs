@@ -852,13 +852,8 @@ impl<const N: usize, M: ManifoldRows, L: Levers<N>> ContactBatch<N, M, L> {
     /// sliding), then the layout's twist friction, at the manifold centre.
     #[inline(always)]
     fn solve_friction(&mut self, a: &mut Velocities, b: &mut Velocities) {
-        let mut total = F::ZERO;
-        for cp in &self.points {
-            total += cp.normal_impulse;
-        }
-        let max_f = self.friction * total;
+        let max_f = self.friction_bound();
         let max_f2 = max_f * max_f;
-        let [t1, t2] = self.tangent;
         let [vt1, vt2] = self.tangent_velocity(a, b);
         let m = self.tangent_mass;
         let [old1, old2] = self.tangent_impulse;
@@ -878,16 +873,36 @@ impl<const N: usize, M: ManifoldRows, L: Levers<N>> ContactBatch<N, M, L> {
         let sliding = (stick1 * stick1 + stick2 * stick2).simd_gt(max_f2);
         let l1 = sliding.select(slide1 * clamp, stick1);
         let l2 = sliding.select(slide2 * clamp, stick2);
-        let (d1, d2) = (l1 - old1, l2 - old2);
         self.tangent_impulse = [l1, l2];
+        self.apply_tangent(a, b, [l1 - old1, l2 - old2]);
+        if L::ANGULAR {
+            self.manifold
+                .solve_twist(&self.points, self.friction, self.normal, a, b);
+        }
+    }
+
+    /// The Coulomb bound on the friction impulse at the manifold centre: the coefficient
+    /// times the points' accumulated normal impulses.
+    #[inline(always)]
+    fn friction_bound(&self) -> F {
+        let mut total = F::ZERO;
+        for cp in &self.points {
+            total += cp.normal_impulse;
+        }
+        self.friction * total
+    }
+
+    /// Moves the bodies' velocities `a` and `b` by a change `d` of the friction impulses
+    /// along the two tangents at the manifold centre.
+    #[inline(always)]
+    fn apply_tangent(&self, a: &mut Velocities, b: &mut Velocities, [d1, d2]: [F; 2]) {
+        let [t1, t2] = self.tangent;
         let p = t1.scale(d1) + t2.scale(d2);
         a.v -= self.inv_mass_a * p;
         b.v += self.inv_mass_b * p;
         if let Some(rows) = self.levers.rows() {
             a.w -= rows.irt_a[0].scale(d1) + rows.irt_a[1].scale(d2);
             b.w += rows.irt_b[0].scale(d1) + rows.irt_b[1].scale(d2);
-            self.manifold
-                .solve_twist(&self.points, self.friction, self.normal, a, b);
         }
     }
 
@@ -1105,11 +1120,7 @@ impl<L: Levers<4>> ContactBatch<4, FaceContact, L> {
     /// correction), held within the friction cone of the normal impulses, and moves the
     /// bodies' velocities `a` and `b` by what was added.
     fn add_column_friction(&mut self, a: &mut Velocities, b: &mut Velocities, tangent: [F; 2]) {
-        let mut total = F::ZERO;
-        for cp in &self.points {
-            total += cp.normal_impulse;
-        }
-        let max_f = self.friction * total;
+        let max_f = self.friction_bound();
         let [old1, old2] = self.tangent_impulse;
         let (mut new1, mut new2) = (old1 + tangent[0], old2 + tangent[1]);
         let len2 = new1 * new1 + new2 * new2;
@@ -1122,14 +1133,7 @@ impl<L: Levers<4>> ContactBatch<4, FaceContact, L> {
             new2 *= scale;
         }
         self.tangent_impulse = [new1, new2];
-        let (d1, d2) = (new1 - old1, new2 - old2);
-        let p = self.tangent[0].scale(d1) + self.tangent[1].scale(d2);
-        a.v -= self.inv_mass_a * p;
-        b.v += self.inv_mass_b * p;
-        if let Some(rows) = self.levers.rows() {
-            a.w -= rows.irt_a[0].scale(d1) + rows.irt_a[1].scale(d2);
-            b.w += rows.irt_b[0].scale(d1) + rows.irt_b[1].scale(d2);
-        }
+        self.apply_tangent(a, b, [new1 - old1, new2 - old2]);
     }
 
     /// Adds `impulse[k]` to point `k`'s normal impulse per lane (0 on lanes that are not
