@@ -89,8 +89,11 @@ pub struct PhysicsSettings {
     /// Default: `0.02`
     /// Too high: ghost collisions near edges. Too low: fast bodies overlap before contact.
     pub speculative_distance: f32,
-    /// Cap on the extra speculative distance from relative velocity for bodies without CCD,
-    /// metres (the distance is `speculative_distance + |v_rel| · dt`, capped by this).
+    /// Cap on the extra speculative distance from relative velocity, metres (the distance is
+    /// `speculative_distance + |v_rel| · dt`, capped by this). Bodies with CCD too: past the
+    /// cap their time of impact stops them, and the contact takes over at the next step. A
+    /// speculative contact as long as a bullet's step was a ghost: a 2 cm bullet at 300 m/s
+    /// passing 5 cm beside a box resting against a wall knocked it spinning at 190 rad/s.
     /// Default: `0.5`
     /// Too high: costly pairs for fast bodies, ghost contacts. Too low: falling bodies
     /// overlap the ground at impact.

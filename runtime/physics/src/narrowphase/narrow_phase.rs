@@ -17,6 +17,7 @@ use crate::body_handle::BodyHandle;
 use crate::body_set::BodySet;
 use crate::body_type::BodyType;
 use crate::broadphase::BroadPhase;
+use crate::collider::Collider;
 use crate::collider_handle::ColliderHandle;
 use crate::collider_set::ColliderSet;
 use crate::contact_event::{ContactEvent, ContactEventKind};
@@ -320,19 +321,11 @@ impl NarrowPhase {
                 }
                 continue;
             }
-            // Speculative margin grows with the closing speed (uncapped under CCD).
-            let sweep = (bb.linvel - ba.linvel).length() * settings.dt;
-            let ccd = settings.ccd_enabled && (ba.ccd_enabled || bb.ccd_enabled);
-            let margin = settings.speculative_distance
-                + if ccd {
-                    sweep
-                } else {
-                    sweep.min(settings.max_speculative_distance)
-                };
             let rot_a = ba.rotation;
             let rot_b = bb.rotation;
             let d_ab = bb.translation - ba.translation;
             let inv_a = rot_a.inverse();
+            let margin = speculative_margin((ca, ba), (cb, bb), d_ab, settings);
             let pair = &mut self.pairs[i];
             pair.reach = ba
                 .translation
@@ -694,5 +687,61 @@ pub(crate) fn make_event(
         points,
         impulse,
         sensor: p.sensor,
+    }
+}
+
+/// How far ahead of touching the pair's contacts are generated: `speculative_distance`, and
+/// as far again as the two close over the step (up to `max_speculative_distance`; CCD's time
+/// of impact stops what moves farther), unless they close by more than twice the radii of
+/// balls about the two shapes, and those balls, moving with their bodies over the step, never
+/// come within `speculative_distance` of each other.
+///
+/// A speculative contact holds its two bodies apart along the normal it was made with, from
+/// the closest points at the step's start: for a body that will go by the other, a ghost.
+/// A 5 cm ball at 300 m/s passing 6 cm beside a 3 cm box, 37 cm short of it at a step's
+/// start, met it along a normal nearly along its path and threw it at 300 m/s; with CCD on,
+/// when the margin had no cap, from metres away.
+fn speculative_margin(
+    (ca, ba): (&Collider, &NarrowBody),
+    (cb, bb): (&Collider, &NarrowBody),
+    d_ab: Vec3,
+    settings: &PhysicsSettings,
+) -> f32 {
+    let base = settings.speculative_distance;
+    let closing = (bb.linvel - ba.linvel) * settings.dt;
+    let sweep = closing.length();
+    if sweep <= base {
+        return base + sweep;
+    }
+    let margin = base + sweep.min(settings.max_speculative_distance);
+    let (Some(ra), Some(rb)) = (ca.shape.bounding_radius(), cb.shape.bounding_radius()) else {
+        return margin;
+    };
+    if sweep <= 2.0 * (ra + rb) {
+        // Closing by less than twice the sum of the balls' radii in a step: a crowd, where a
+        // contact made with one neighbour changes a body's path within the step. Without these
+        // margins 8,000 spheres poured into a box cost 15–20 % more at balanced (12 % when
+        // the bound was the smaller radius), and at fast 300 of them, the bound once the sum,
+        // ended 4.9 cm into each other instead of 4.3.
+        return margin;
+    }
+    // Ball centres relative to A's body origin, and how far a turn moves any point of a ball
+    // over the step (its distance from the centre of mass, plus the radius, times the angle).
+    let centre_a = ba.rotation * ca.local_pose.translation;
+    let centre_b = d_ab + bb.rotation * cb.local_pose.translation;
+    let turned = |b: &NarrowBody, centre: Vec3, origin: Vec3, r: f32| {
+        let com = origin + b.rotation * b.local_com;
+        b.angvel.length() * settings.dt * (centre.distance(com) + r)
+    };
+    let slack = turned(ba, centre_a, Vec3::ZERO, ra) + turned(bb, centre_b, d_ab, rb);
+    // Closest approach of B's centre to A's over the step (B moving by `closing` relative
+    // to A).
+    let c = centre_b - centre_a;
+    let s = (-c.dot(closing) / (sweep * sweep)).clamp(0.0, 1.0);
+    let nearest = (c + closing * s).length();
+    if nearest > ra + rb + base + slack {
+        base
+    } else {
+        margin
     }
 }

@@ -18,8 +18,11 @@
 //! land inside a 200 m wall and the next step pushed it out of the back).
 //!
 //! A body already within `target` of the other at step start (resting on it, or stopped
-//! there by last step's time of impact) is checked against going deeper: its translation
-//! may not close more than half the gap. A body that starts overlapping is swept as its
+//! there by last step's time of impact), or into it by less than half of that, is checked
+//! against going deeper: its translation may take it `target / 2` deeper than it started
+//! (than touching, from a gap), an overlap the contact solver parts at the next step. (Allowed to close only half
+//! its gap, two bodies pushed together by a moving wall stopped each other at every step's
+//! start, and the wall went through them.) A body that starts overlapping is swept as its
 //! inner core (a ball of [`CCD_CORE_FRACTION`] of its smallest half extent at its centre), or
 //! as its centre alone when that core overlaps too, so even a deep contact the solver failed
 //! to stop cannot carry it through.
@@ -121,22 +124,33 @@ impl BodyMotion {
     }
 }
 
-/// What a sweep found.
+/// One collider a sweep found in the body's way.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub(crate) struct Sweep {
-    /// Fraction of the step the body may move (1: the whole step).
+pub(crate) struct SweepHit {
+    /// Fraction of the step the body may move (`< 1`).
     pub t: f32,
-    /// The body hit first, when `t < 1`.
-    pub hit: Option<BodyHandle>,
-    /// Some search hit [`CCD_MAX_ITERATIONS`].
-    pub not_converged: bool,
+    /// The body hit.
+    pub body: BodyHandle,
     /// The hit came from a start in contact or in overlap, where the search bounds the
     /// translation only (see [`Pair::time_of_impact`]).
     pub from_contact: bool,
-    /// Unit normal of the hit, from the swept body towards the one hit (zero without a hit).
+    /// Unit normal of the hit, from the swept body towards the one hit.
     pub normal: Vec3,
-    /// Combined restitution of the two colliders of the hit.
+    /// Combined restitution of the two colliders.
     pub restitution: f32,
+}
+
+/// What a sweep found.
+#[derive(Clone, Copy, Debug, PartialEq, Default)]
+pub(crate) struct Sweep {
+    /// The first hit.
+    pub first: Option<SweepHit>,
+    /// The first hit of a body that does not stop itself (static, kinematic, or dynamic
+    /// without CCD): where the body stops when it need not stop for a dynamic body with CCD
+    /// met earlier (see `PhysicsWorld::release_slow_stops`).
+    pub first_unswept: Option<SweepHit>,
+    /// Some search hit [`CCD_MAX_ITERATIONS`].
+    pub not_converged: bool,
 }
 
 /// What one pair search found (see [`Pair::time_of_impact`]).
@@ -172,14 +186,16 @@ pub(crate) struct CcdClamp {
     /// moving into a bullet carries it along for the rest of the step); zero for a dynamic
     /// body with CCD, which stops with this one instead.
     pub hit_motion: Vec3,
-    /// [`Sweep::from_contact`].
+    /// [`SweepHit::from_contact`].
     pub from_contact: bool,
     /// The body hit.
     pub hit: BodyHandle,
-    /// [`Sweep::normal`].
+    /// [`SweepHit::normal`].
     pub normal: Vec3,
-    /// [`Sweep::restitution`].
+    /// [`SweepHit::restitution`].
     pub restitution: f32,
+    /// [`Sweep::first_unswept`], where that is not the hit.
+    pub fallback: Option<SweepHit>,
 }
 
 /// One collider of the swept body, ready for the pair searches.
@@ -208,14 +224,7 @@ pub(crate) fn sweep_body(
     others_move: f32,
     motion_of: &dyn Fn(BodyHandle) -> Option<BodyMotion>,
 ) -> Sweep {
-    let mut out = Sweep {
-        t: 1.0,
-        hit: None,
-        not_converged: false,
-        from_contact: false,
-        normal: Vec3::ZERO,
-        restitution: 0.0,
-    };
+    let mut out = Sweep::default();
     let Some(b) = bodies.get(body) else {
         return out;
     };
@@ -282,14 +291,31 @@ pub(crate) fn sweep_body(
                 origin,
                 swept: &swept,
             };
-            let hit = pair.time_of_impact(target, out.t, local_box);
+            // Hits of bodies that stop themselves count only before every other hit; the
+            // others before the first of their own kind.
+            let swept_other = bodies.get(other.parent).is_some_and(|o| o.swept());
+            let t_of = |h: Option<SweepHit>| h.map_or(1.0, |h| h.t);
+            let t_max = if swept_other {
+                t_of(out.first)
+            } else {
+                t_of(out.first_unswept)
+            };
+            let hit = pair.time_of_impact(target, t_max, local_box);
             out.not_converged |= hit.capped;
-            if hit.t < out.t {
-                out.t = hit.t;
-                out.hit = Some(other.parent);
-                out.from_contact = hit.from_contact;
-                out.normal = hit.normal;
-                out.restitution = Material::combine(&c.material, &other.material).0;
+            if hit.t < t_max {
+                let found = Some(SweepHit {
+                    t: hit.t,
+                    body: other.parent,
+                    from_contact: hit.from_contact,
+                    normal: hit.normal,
+                    restitution: Material::combine(&c.material, &other.material).0,
+                });
+                if !swept_other {
+                    out.first_unswept = found;
+                }
+                if hit.t < t_of(out.first) {
+                    out.first = found;
+                }
             }
             true
         });
@@ -318,13 +344,32 @@ impl Pair<'_> {
             return Impact::NONE;
         };
         if d0 > target {
-            return self.advance(target, t_max, &a.core, a.radius, &a.local, true);
+            return self.advance(
+                target,
+                0.5 * target,
+                t_max,
+                &a.core,
+                a.radius,
+                &a.local,
+                true,
+            );
         }
-        if d0 > 0.0 {
-            // Touching at step start: it may slide along, not close more than half the gap.
+        if d0 > -0.5 * target {
+            // Touching at step start, or overlapping by less than the stop distance: it may
+            // slide along, and go into an overlap at most half the stop distance deeper,
+            // which the contact solver pushes out at the next step.
+            let from = d0.min(0.0);
             return Impact {
                 from_contact: true,
-                ..self.advance(0.5 * d0, t_max, &a.core, a.radius, &a.local, false)
+                ..self.advance(
+                    from - 0.5 * target,
+                    from - target,
+                    t_max,
+                    &a.core,
+                    a.radius,
+                    &a.local,
+                    false,
+                )
             };
         }
         // Overlapping at step start: sweep the inner core.
@@ -345,6 +390,7 @@ impl Pair<'_> {
                         from_contact: true,
                         ..self.advance(
                             core_target,
+                            0.5 * core_target,
                             t_max,
                             &ConvexCore::Point,
                             core_radius,
@@ -361,13 +407,16 @@ impl Pair<'_> {
         }
     }
 
-    /// Conservative advancement from `t = 0` until the distance is at most `target`. With
-    /// `turning`, the closing-speed bound includes both bodies' turns (the bodies start apart);
-    /// without it only their translations (a start in contact, where the solver owns the
-    /// small motions a turn makes).
+    /// Conservative advancement from `t = 0` until the distance is at most `stop`, each step
+    /// aiming at `aim` (< `stop`, so that the search ends in few steps; the distance never
+    /// falls below `aim` at any time it visits). With `turning`, the closing-speed bound
+    /// includes both bodies' turns (the bodies start apart); without it only their
+    /// translations (a start in contact, where the solver owns the small motions a turn makes).
+    #[allow(clippy::too_many_arguments)]
     fn advance(
         &self,
-        target: f32,
+        stop: f32,
+        aim: f32,
         t_max: f32,
         core: &ConvexCore<'_>,
         radius: f32,
@@ -388,7 +437,7 @@ impl Pair<'_> {
                 return Impact::NONE;
             };
             normal = n;
-            if d <= target {
+            if d <= stop {
                 return Impact {
                     t,
                     normal,
@@ -400,7 +449,7 @@ impl Pair<'_> {
             if mu <= 0.0 {
                 return Impact::NONE;
             }
-            let next = t + (d - 0.5 * target) / mu;
+            let next = t + (d - aim) / mu;
             if next >= t_max {
                 return Impact::NONE;
             }
