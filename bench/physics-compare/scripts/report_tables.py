@@ -15,7 +15,8 @@ MAIN = ["free_fall", "bounce", "sliding", "stack", "pyramid", "tunneling", "far_
         "mass_ratio", "incline", "rolling", "long_run", "tiny_huge", "big_pyramid",
         "poured_spheres", "degenerate_hulls"]
 ISSUE15 = ["rotation_energy", "wide_wall_ccd", "restitution_ladder", "elastic_crowd",
-           "mass_ratio_ladder", "size_ladder", "frictionless_stacks"]
+           "mass_ratio_ladder", "size_ladder", "frictionless_stacks", "frictionless_random",
+           "frictionless_drops"]
 JOINTS = ["pendulum", "chain", "hinge_motor", "prismatic_limit", "bridge", "ragdolls"]
 MAIN_HEADER = "| scene | preset | Onyx error | rapier error | Onyx ms/sim-s | rapier ms/sim-s | Onyx/rapier cost |"
 JOINT_ERR_HEADER = "| scene (error) | fast Onyx | fast rapier | balanced Onyx | balanced rapier | precise Onyx | precise rapier |"

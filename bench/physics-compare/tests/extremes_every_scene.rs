@@ -43,6 +43,10 @@ const BOUNDS: &[(&str, f64, f64)] = &[
     ("size_ladder", 1.0, 0.05),
     // At 30 Hz × 1 the frictionless stacks slide apart (a known failure at coarse steps).
     ("frictionless_stacks", 100.0, 1e-4),
+    // Counts of stacks slid apart, of 6. Dropped, both engines let most slide at every
+    // setting (docs/physics-accuracy.md): there the energy bound is the check.
+    ("frictionless_random", 1.0, 0.0),
+    ("frictionless_drops", 6.0, 6.0),
     // At 30 Hz × 1 joints are soft (a quarter of the substep rate, 7.5 Hz): the 120°
     // pendulum's period is 38 % long, the 100:1 chain stretches by its length, the bridge
     // by 1.6 times its length, the loaded carriage sinks 83 cm below its limit.

@@ -17,6 +17,7 @@ pub mod degenerate_hulls;
 pub mod elastic_crowd;
 pub mod far_origin;
 pub mod free_fall;
+pub mod frictionless_random;
 pub mod frictionless_stacks;
 pub mod hinge_motor;
 pub mod incline;
@@ -112,6 +113,8 @@ pub fn all() -> Vec<&'static dyn Scene> {
         &mass_ratio_ladder::MassRatioLadder,
         &size_ladder::SizeLadder,
         &frictionless_stacks::FrictionlessStacks,
+        &frictionless_random::PLACED,
+        &frictionless_random::DROPPED,
         &pendulum::Pendulum,
         &chain::Chain,
         &hinge_motor::HingeMotor,
