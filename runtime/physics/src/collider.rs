@@ -1,5 +1,7 @@
 //! [`Collider`]: a shape attached to a body with a local offset and a material.
 
+use glam::Vec3;
+
 use crate::aabb::Aabb;
 use crate::body_handle::BodyHandle;
 use crate::collision_groups::CollisionGroups;
@@ -27,6 +29,20 @@ pub struct Collider {
 }
 
 impl Collider {
+    /// How far a turn of its body by one radian can move the collider's surface, at most,
+    /// metres: the reach of its core from the body's centre of mass `local_com` (a ball's
+    /// surface does not move as it turns about its own centre). Half spaces: 0.
+    pub(crate) fn turning_reach(&self, local_com: Vec3) -> f32 {
+        let offset = self.local_pose.translation.distance(local_com);
+        offset
+            + match &self.shape {
+                Shape::Sphere(_) | Shape::HalfSpace(_) => 0.0,
+                Shape::Capsule(c) => c.half_height,
+                Shape::Cuboid(c) => c.half_extents.length(),
+                Shape::ConvexHull(h) => h.vertices().iter().map(|v| v.length()).fold(0.0, f32::max),
+                Shape::TriMesh(_) => self.shape.aabb(&Pose::IDENTITY).half_extents().length(),
+            }
+    }
     /// Whether it is a sensor: it reports overlaps (contact events with
     /// [`crate::ContactEvent::sensor`] set) and pushes nothing.
     #[must_use]

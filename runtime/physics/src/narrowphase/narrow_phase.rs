@@ -701,6 +701,7 @@ pub(crate) fn make_event(
 /// A 5 cm ball at 300 m/s passing 6 cm beside a 3 cm box, 37 cm short of it at a step's
 /// start, met it along a normal nearly along its path and threw it at 300 m/s; with CCD on,
 /// when the margin had no cap, from metres away.
+#[inline]
 fn speculative_margin(
     (ca, ba): (&Collider, &NarrowBody),
     (cb, bb): (&Collider, &NarrowBody),
@@ -710,6 +711,43 @@ fn speculative_margin(
     let base = settings.speculative_distance;
     let closing = (bb.linvel - ba.linvel) * settings.dt;
     let sweep = closing.length();
+    if sweep <= base && !ba.kinematic && !bb.kinematic {
+        // Nearly every pair of a pile.
+        return base + sweep;
+    }
+    far_speculative_margin((ca, ba), (cb, bb), d_ab, closing, settings)
+}
+
+/// [`speculative_margin`] of a pair closing faster than the base distance a step, or with a
+/// kinematic body.
+#[inline(never)]
+fn far_speculative_margin(
+    (ca, ba): (&Collider, &NarrowBody),
+    (cb, bb): (&Collider, &NarrowBody),
+    d_ab: Vec3,
+    closing: Vec3,
+    settings: &PhysicsSettings,
+) -> f32 {
+    let base = settings.speculative_distance;
+    // A kinematic body's turn moves its points too: a paddle spinning at 10 rad/s swept
+    // 33 cm a step at 1 m from its axis at fast, through a 2 cm ball it had no contact
+    // with. Counted where it moves a point farther than the base distance in a step, and
+    // only for kinematic bodies, whose turns are imposed and which no CCD sweeps: for a
+    // dynamic body the straight line a contact extrapolates a turning corner along is a
+    // ghost of its own (an elastic box tumbling on the floor at fast drifted 16 % in
+    // energy instead of 12 %), and its turns are in its own CCD sweep.
+    let turning = |b: &NarrowBody, c: &Collider| {
+        if !b.kinematic || b.angvel == Vec3::ZERO {
+            return 0.0;
+        }
+        let moved = b.angvel.length() * settings.dt * c.turning_reach(b.local_com);
+        if moved > base {
+            moved
+        } else {
+            0.0
+        }
+    };
+    let sweep = closing.length() + turning(ba, ca) + turning(bb, cb);
     if sweep <= base {
         return base + sweep;
     }
@@ -737,7 +775,12 @@ fn speculative_margin(
     // Closest approach of B's centre to A's over the step (B moving by `closing` relative
     // to A).
     let c = centre_b - centre_a;
-    let s = (-c.dot(closing) / (sweep * sweep)).clamp(0.0, 1.0);
+    let len2 = closing.length_squared();
+    let s = if len2 > 0.0 {
+        (-c.dot(closing) / len2).clamp(0.0, 1.0)
+    } else {
+        0.0
+    };
     let nearest = (c + closing * s).length();
     if nearest > ra + rb + base + slack {
         base

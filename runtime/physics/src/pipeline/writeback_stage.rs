@@ -234,11 +234,33 @@ impl PhysicsWorld {
                 s.max_speculative_distance
             });
             let disp = v.normalize_or_zero() * sweep_len;
+            // A kinematic body's turn sweeps its points too (a spinning paddle over what is
+            // beside it), where it moves them farther than the speculative distance in a
+            // step (see `narrow_phase::speculative_margin`).
+            let turn = if b.body_type == BodyType::Kinematic {
+                b.angvel.length() * s.dt
+            } else {
+                0.0
+            };
             for &ch in &b.colliders {
                 if let Some(c) = self.colliders.get_mut(ch) {
                     let p = pose.mul_pose(&c.local_pose);
                     c.aabb = c.shape.aabb(&p);
-                    let mut swept = c.aabb.expanded(s.speculative_distance);
+                    let turned = if turn > 0.0 {
+                        turn * c.turning_reach(b.mass.local_com)
+                    } else {
+                        0.0
+                    };
+                    let grow = if turned > s.speculative_distance {
+                        turned.min(if ccd_on {
+                            f32::MAX
+                        } else {
+                            s.max_speculative_distance
+                        })
+                    } else {
+                        0.0
+                    };
+                    let mut swept = c.aabb.expanded(s.speculative_distance + grow);
                     swept.min += disp.min(Vec3::ZERO);
                     swept.max += disp.max(Vec3::ZERO);
                     self.broadphase
