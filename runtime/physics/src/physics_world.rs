@@ -22,6 +22,7 @@ use crate::joint_set::JointSet;
 use crate::mass_properties::MassProperties;
 use crate::narrowphase::NarrowPhase;
 use crate::physics_settings::PhysicsSettings;
+use crate::pipeline::writeback_stage::swept_bounds;
 use crate::rigid_body::RigidBody;
 use crate::rigid_body_desc::RigidBodyDesc;
 use crate::solver::body_state::BodyState;
@@ -251,6 +252,17 @@ impl PhysicsWorld {
         body.colliders.push(h);
         body.wake_up();
         self.recompute_mass(parent);
+        // A body inserted moving gets its bounds swept for its first step as the write-back
+        // sweeps them for every later one: without, a paddle created spinning passed over what
+        // was within its first step's turn, and a body created moving met nothing ahead of it
+        // in that step.
+        if let (Some(b), Some(c)) = (self.bodies.get(parent), self.colliders.get(h)) {
+            if b.linvel != Vec3::ZERO || b.angvel != Vec3::ZERO {
+                let (swept, disp) = swept_bounds(c, b, &self.settings);
+                self.broadphase
+                    .update_proxy(c.proxy, swept, self.settings.aabb_margin, disp);
+            }
+        }
         Some(h)
     }
 

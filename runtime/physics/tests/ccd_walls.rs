@@ -497,10 +497,7 @@ fn a_spinning_kinematic_paddle_pushes_what_it_reaches() {
                     // +x towards -z), by the turn it takes the arm to reach it.
                     let bodies: Vec<(BodyHandle, f32)> = (0..6)
                         .map(|k| {
-                            // Reached after the first step (bounds are swept from the first
-                            // step's end: a paddle created spinning passes over what is
-                            // within its first step's turn).
-                            let (r, angle) = (0.3 + 0.3 * k as f32, -1.05 - 0.15 * k as f32);
+                            let (r, angle) = (0.3 + 0.3 * k as f32, -0.2 - 0.25 * k as f32);
                             let b = w.insert_body(
                                 RigidBodyDesc::dynamic()
                                     .translation(Vec3::new(r * angle.cos(), 0.0, r * angle.sin()))
@@ -513,7 +510,7 @@ fn a_spinning_kinematic_paddle_pushes_what_it_reaches() {
                     let per_step = spin * w.settings().dt;
                     let mut pushed_at = vec![f32::NAN; bodies.len()];
                     let mut turned = 0.0;
-                    while turned < 2.3 {
+                    while turned < 1.8 {
                         w.step();
                         turned += per_step;
                         for (k, &(b, _)) in bodies.iter().enumerate() {

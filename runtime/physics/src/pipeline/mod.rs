@@ -13,4 +13,4 @@ mod resting_accelerations;
 mod sleep_stage;
 mod solve_stage;
 pub(crate) mod union_find;
-mod writeback_stage;
+pub(crate) mod writeback_stage;

@@ -13,12 +13,16 @@ use std::time::Instant;
 use glam::Vec3;
 
 use super::ccd::{sweep_body, BodyMotion, CcdClamp, SweepHit};
+use crate::aabb::Aabb;
 use crate::body_handle::BodyHandle;
 use crate::body_set::BodySet;
 use crate::body_type::BodyType;
+use crate::collider::Collider;
 use crate::far_body::FarBody;
+use crate::physics_settings::PhysicsSettings;
 use crate::physics_world::PhysicsWorld;
 use crate::pose::{unit_rotation, Pose};
+use crate::rigid_body::RigidBody;
 use crate::rigid_body::SpinCache;
 use crate::solver::solver_body::{CAPPED_ANGULAR, CAPPED_LINEAR};
 use crate::speed_cap_hit::{SpeedCap, SpeedCapHit};
@@ -216,7 +220,6 @@ impl PhysicsWorld {
                 b.linvel = Vec3::ZERO;
                 b.angvel = Vec3::ZERO;
             }
-            let ccd_on = s.ccd_enabled && b.swept();
             b.pose = pose;
             b.last_good_pose = pose;
             b.spin_cache = (sb.gyro && sb.omega_world == st.w).then_some(SpinCache {
@@ -227,42 +230,10 @@ impl PhysicsWorld {
             b.force = Vec3::ZERO;
             b.torque = Vec3::ZERO;
             // Bounds, swept ahead by the expected next-step motion.
-            let v = b.linvel;
-            let sweep_len = (v.length() * s.dt).min(if ccd_on {
-                f32::MAX
-            } else {
-                s.max_speculative_distance
-            });
-            let disp = v.normalize_or_zero() * sweep_len;
-            // A kinematic body's turn sweeps its points too (a spinning paddle over what is
-            // beside it), where it moves them farther than the speculative distance in a
-            // step (see `narrow_phase::speculative_margin`).
-            let turn = if b.body_type == BodyType::Kinematic {
-                b.angvel.length() * s.dt
-            } else {
-                0.0
-            };
             for &ch in &b.colliders {
                 if let Some(c) = self.colliders.get_mut(ch) {
-                    let p = pose.mul_pose(&c.local_pose);
-                    c.aabb = c.shape.aabb(&p);
-                    let turned = if turn > 0.0 {
-                        turn * c.turning_reach(b.mass.local_com)
-                    } else {
-                        0.0
-                    };
-                    let grow = if turned > s.speculative_distance {
-                        turned.min(if ccd_on {
-                            f32::MAX
-                        } else {
-                            s.max_speculative_distance
-                        })
-                    } else {
-                        0.0
-                    };
-                    let mut swept = c.aabb.expanded(s.speculative_distance + grow);
-                    swept.min += disp.min(Vec3::ZERO);
-                    swept.max += disp.max(Vec3::ZERO);
+                    c.aabb = c.shape.aabb(&pose.mul_pose(&c.local_pose));
+                    let (swept, disp) = swept_bounds(c, b, &s);
                     self.broadphase
                         .update_proxy(c.proxy, swept, s.aabb_margin, disp);
                 }
@@ -480,4 +451,34 @@ fn clamp_of(
         restitution: hit.restitution,
         fallback,
     }
+}
+
+/// The broadphase bounds of collider `c` (its `aabb` current) of body `b`: swept ahead by the
+/// body's expected motion over the next step, its velocity times the step (up to
+/// `max_speculative_distance`, without a cap for a body with CCD) and, for a kinematic body,
+/// its turn times the collider's reach where that passes `speculative_distance` (a spinning
+/// paddle over what is beside it; see `narrow_phase::speculative_margin`); and that
+/// displacement, for the broadphase's look-ahead.
+pub(crate) fn swept_bounds(c: &Collider, b: &RigidBody, s: &PhysicsSettings) -> (Aabb, Vec3) {
+    let cap = if s.ccd_enabled && b.swept() {
+        f32::MAX
+    } else {
+        s.max_speculative_distance
+    };
+    let v = b.linvel;
+    let disp = v.normalize_or_zero() * (v.length() * s.dt).min(cap);
+    let turned = if b.body_type == BodyType::Kinematic && b.angvel != Vec3::ZERO {
+        b.angvel.length() * s.dt * c.turning_reach(b.mass.local_com)
+    } else {
+        0.0
+    };
+    let grow = if turned > s.speculative_distance {
+        turned.min(cap)
+    } else {
+        0.0
+    };
+    let mut swept = c.aabb.expanded(s.speculative_distance + grow);
+    swept.min += disp.min(Vec3::ZERO);
+    swept.max += disp.max(Vec3::ZERO);
+    (swept, disp)
 }
