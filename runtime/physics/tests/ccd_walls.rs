@@ -478,8 +478,10 @@ fn a_bullet_flying_by_leaves_a_body_at_rest_alone() {
 /// body in its way (at rest, 0.3 to 1.8 m from the axis, with CCD or without) as it
 /// arrives, instead of passing over it: contacts are made as far ahead as a turn moves the
 /// paddle's points. They were made from its linear velocity alone, none: at 10 rad/s at fast
-/// the paddle swept 33 cm a step at 1 m from its axis, over 2 cm balls it never touched.
-/// Where the paddle's point moves no farther in a step than `max_speculative_distance`.
+/// the paddle swept 33 cm a step at 1 m from its axis, over 2 cm balls it never touched; and
+/// in its first step, before the write-back had swept its bounds, over what was within that
+/// step's turn. Where the paddle's point moves no farther in a step than
+/// `max_speculative_distance`.
 /// (Open: a body the paddle pushes slides out along it, and sinks through it over a few
 /// tenths of a second; see docs/physics-accuracy.md.)
 #[test]
