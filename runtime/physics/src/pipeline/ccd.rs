@@ -196,6 +196,9 @@ pub(crate) struct CcdClamp {
     pub restitution: f32,
     /// [`Sweep::first_unswept`], where that is not the hit.
     pub fallback: Option<SweepHit>,
+    /// The motion of a turning kinematic body hit, which carries this one by its rigid
+    /// motion over the rest of the step (instead of `hit_motion`).
+    pub carrier: Option<BodyMotion>,
 }
 
 /// One collider of the swept body, ready for the pair searches.
@@ -212,7 +215,10 @@ struct Mover<'a> {
 /// Earliest fraction `t` in `[0, 1]` of the body's motion at which one of its convex
 /// colliders comes within the stop distance of another collider (see the module docs).
 /// `motion_of` gives the motion of any other body over the step; `others_move` is the largest
-/// displacement of any body this step (the broadphase holds their bounds at step start).
+/// displacement of any body this step (the broadphase holds their bounds at step start), and
+/// `driven` the largest of a kinematic body's, its turn times its reach included: a body at
+/// rest is swept too where a kinematic body moves that far (a wall at 50 m/s passed over
+/// balls at rest with CCD on).
 #[allow(clippy::too_many_arguments)]
 pub(crate) fn sweep_body(
     colliders: &ColliderSet,
@@ -222,6 +228,7 @@ pub(crate) fn sweep_body(
     motion: &BodyMotion,
     linear_slop: f32,
     others_move: f32,
+    driven: f32,
     motion_of: &dyn Fn(BodyHandle) -> Option<BodyMotion>,
 ) -> Sweep {
     let mut out = Sweep::default();
@@ -246,7 +253,7 @@ pub(crate) fn sweep_body(
         let centre_offset = c.local_pose.translation - motion.local_com;
         let reach = centre_offset.length() + core_reach(&core);
         let bound = centre_offset.length() + local_box.half_extents().length();
-        if disp.length() + turn * reach < CCD_MOTION_THRESHOLD * min_half {
+        if disp.length() + turn * reach + driven < CCD_MOTION_THRESHOLD * min_half {
             continue;
         }
         let target = linear_slop.min(CCD_TARGET_SIZE_FRACTION * min_half);

@@ -54,7 +54,7 @@ impl PhysicsWorld {
             self.end_poses.push(pose);
         }
         // Largest displacement of any body, computed once the first CCD body is met.
-        let mut max_move: Option<f32> = None;
+        let mut max_move: Option<(f32, f32)> = None;
         // Pass 2: CCD, from the start poses (still in the bodies) to the end poses.
         self.ccd_clamps.clear();
         if s.ccd_enabled {
@@ -81,18 +81,27 @@ impl PhysicsWorld {
                     continue;
                 }
                 let t0 = Instant::now();
-                let others_move = *max_move.get_or_insert_with(|| {
+                let (others_move, driven) = *max_move.get_or_insert_with(|| {
+                    // Every body's displacement, and a kinematic body's with its turn times
+                    // its reach (which no sweep of its own covers).
                     (1..n)
                         .filter_map(|j| {
                             let o = self.bodies.arena.get_by_index(self.solver_handles[j])?;
-                            let com0 = o.pose.transform_point(o.mass.local_com);
-                            Some(
-                                end_poses[j]
-                                    .transform_point(o.mass.local_com)
-                                    .distance(com0),
-                            )
+                            let m = BodyMotion::between(&o.pose, &end_poses[j], o.mass.local_com);
+                            let moved = m.displacement().length();
+                            if o.body_type != BodyType::Kinematic {
+                                return Some((moved, 0.0));
+                            }
+                            let reach = o
+                                .colliders
+                                .iter()
+                                .filter_map(|&ch| self.colliders.get(ch))
+                                .map(|c| c.turning_reach(o.mass.local_com))
+                                .fold(0.0f32, f32::max);
+                            let driven = moved + m.turn() * reach;
+                            Some((driven, driven))
                         })
-                        .fold(0.0f32, f32::max)
+                        .fold((0.0f32, 0.0f32), |a, b| (a.0.max(b.0), a.1.max(b.1)))
                 });
                 let motion = BodyMotion::between(&b.pose, end, b.mass.local_com);
                 let sweep = sweep_body(
@@ -103,6 +112,7 @@ impl PhysicsWorld {
                     &motion,
                     s.linear_slop,
                     others_move,
+                    driven,
                     &motion_of,
                 );
                 if sweep.not_converged {
@@ -128,14 +138,25 @@ impl PhysicsWorld {
                 let CcdClamp {
                     t, from_contact, ..
                 } = clamp;
-                let carry = clamp.hit_motion * (1.0 - t);
                 let k = clamp.body as usize;
                 let Some(b) = self.bodies.arena.get_by_index(self.solver_handles[k]) else {
                     continue;
                 };
                 let motion = BodyMotion::between(&b.pose, &self.end_poses[k], b.mass.local_com);
-                let mut pose = motion.pose_at(t, Vec3::ZERO);
-                pose.translation += carry;
+                let at_t = motion.pose_at(t, Vec3::ZERO);
+                let pose = match clamp.carrier {
+                    // Carried by a turning kinematic body: its motion from `t` to the end.
+                    Some(m) => m
+                        .pose_at(1.0, Vec3::ZERO)
+                        .mul_pose(&m.pose_at(t, Vec3::ZERO).inverse())
+                        .mul_pose(&at_t),
+                    None => Pose::new(
+                        at_t.translation + clamp.hit_motion * (1.0 - t),
+                        at_t.rotation,
+                    ),
+                };
+                let carry =
+                    pose.transform_point(b.mass.local_com) - at_t.transform_point(b.mass.local_com);
                 self.end_poses[k] = pose;
                 // Stopped short of where the solver left it, the body keeps the energy it
                 // has there (as a rebound does, see `solver::restitution`):
@@ -292,6 +313,7 @@ impl PhysicsWorld {
                             normal: -c.normal,
                             restitution: c.restitution,
                             fallback: None,
+                            carrier: None,
                         });
                         clamp_of[other as usize] = self.ccd_clamps.len() as u32;
                         changed = true;
@@ -441,6 +463,14 @@ fn clamp_of(
         Some(o) if o.swept() => Vec3::ZERO,
         _ => motion_of(hit.body).map_or(Vec3::ZERO, |m| m.displacement()),
     };
+    // A turning kinematic body carries what it hit by its whole rigid motion (a spinning
+    // paddle's point moves, its centre need not).
+    let carrier = match bodies.get(hit.body) {
+        Some(o) if o.body_type == BodyType::Kinematic => {
+            motion_of(hit.body).filter(|m| m.q0 != m.q1)
+        }
+        _ => None,
+    };
     CcdClamp {
         body,
         t: hit.t,
@@ -450,6 +480,7 @@ fn clamp_of(
         normal: hit.normal,
         restitution: hit.restitution,
         fallback,
+        carrier,
     }
 }
 
