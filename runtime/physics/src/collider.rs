@@ -35,14 +35,13 @@ impl Collider {
     pub(crate) fn turning_reach(&self, local_com: Vec3) -> f32 {
         let offset = self.local_pose.translation.distance(local_com);
         offset
-            + match &self.shape {
-                Shape::Sphere(_) | Shape::HalfSpace(_) => 0.0,
-                Shape::Capsule(c) => c.half_height,
-                Shape::Cuboid(c) => c.half_extents.length(),
-                Shape::ConvexHull(h) => h.vertices().iter().map(|v| v.length()).fold(0.0, f32::max),
-                Shape::TriMesh(_) => self.shape.aabb(&Pose::IDENTITY).half_extents().length(),
+            + match self.shape.convex_core() {
+                Some((core, _)) => core.reach(),
+                None if matches!(self.shape, Shape::HalfSpace(_)) => 0.0,
+                None => self.shape.aabb(&Pose::IDENTITY).half_extents().length(),
             }
     }
+
     /// Whether it is a sensor: it reports overlaps (contact events with
     /// [`crate::ContactEvent::sensor`] set) and pushes nothing.
     #[must_use]

@@ -8,7 +8,7 @@ use super::gjk::{gjk_distance, support, GjkStatus};
 use super::narrow_stats::NarrowStats;
 use super::polygon_clip::clip_features;
 use super::raw_manifold::RawManifold;
-use super::separating_axis::{convex_gap_after, core_reach, separation_along};
+use super::separating_axis::{convex_gap_after, separation_along};
 use crate::pose::Pose;
 use crate::shape::ConvexCore;
 
@@ -65,7 +65,7 @@ pub(crate) fn convex_convex(
     // (past the margin) three steps in four, fell into it and was pushed back out. The face
     // normals of both cores, measured from support points, give the axis and a lower bound
     // on the distance there.
-    let (reach_a, reach_b) = (core_reach(a), core_reach(b));
+    let (reach_a, reach_b) = (a.reach(), b.reach());
     let (n, sep, wa, wb) = if reach_a.max(reach_b) > LARGE_CORE_RATIO * reach_a.min(reach_b) {
         // The best lower bound on the distance among GJK's normal and the face normals.
         let (gap, axis) = convex_gap_after(&g, a, pa, ra, b, pb, rb);

@@ -21,17 +21,6 @@ pub(crate) fn separation_along(
     -normal.dot(support(a, pa, b, pb, normal).w)
 }
 
-/// Largest distance of a core's points from its frame origin, metres.
-pub(crate) fn core_reach(core: &ConvexCore<'_>) -> f32 {
-    match core {
-        ConvexCore::Point => 0.0,
-        ConvexCore::Segment(a, b) => a.length().max(b.length()),
-        ConvexCore::Cuboid(h) => h.length(),
-        ConvexCore::Hull(h) => h.vertices().iter().map(|v| v.length()).fold(0.0, f32::max),
-        ConvexCore::Triangle(t) => t.iter().map(|v| v.length()).fold(0.0, f32::max),
-    }
-}
-
 /// A lower bound on the distance of two placed convex cores (with radii), and the normal
 /// from A to B it was measured along: the largest separation, from support points, along
 /// the GJK normal and the face normals of both cores (negative when overlapping).

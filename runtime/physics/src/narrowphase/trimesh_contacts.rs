@@ -5,7 +5,6 @@ use glam::Vec3;
 use super::convex_convex::{convex_convex, ClipScratch};
 use super::narrow_stats::NarrowStats;
 use super::raw_manifold::RawManifold;
-use super::separating_axis::core_reach;
 use crate::pose::Pose;
 use crate::shape::{ConvexCore, Shape, TriMesh};
 
@@ -77,7 +76,7 @@ pub(crate) fn trimesh_convex(
     merge_coplanar(
         out,
         first,
-        TRIMESH_SAME_POINT_FRACTION * core_reach(&core).max(radius),
+        TRIMESH_SAME_POINT_FRACTION * core.reach().max(radius),
     );
 }
 

@@ -36,7 +36,7 @@ use crate::broadphase::BroadPhase;
 use crate::collider::Collider;
 use crate::collider_set::ColliderSet;
 use crate::material::Material;
-use crate::narrowphase::separating_axis::{convex_gap, core_reach};
+use crate::narrowphase::separating_axis::convex_gap;
 use crate::pose::Pose;
 use crate::shape::{ConvexCore, Shape};
 
@@ -175,6 +175,31 @@ impl Impact {
     };
 }
 
+/// How a body CCD stopped is carried over the rest of the step by the body it hit.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) enum Carry {
+    /// Not at all: the body hit stops too (dynamic, with CCD).
+    Stopped,
+    /// By this displacement over the whole step, of the body hit as it goes on moving (a
+    /// wall moving into a bullet carries it along), or of a much slower body with CCD
+    /// (`PhysicsWorld::carried_by_slow_bodies`).
+    By(Vec3),
+    /// By the whole rigid motion of a turning kinematic body (a spinning paddle's point
+    /// moves, its centre need not).
+    Rigid(BodyMotion),
+}
+
+impl Carry {
+    /// Whether it moves the stopped body at all.
+    pub fn moves(&self) -> bool {
+        match self {
+            Self::Stopped => false,
+            Self::By(d) => *d != Vec3::ZERO,
+            Self::Rigid(_) => true,
+        }
+    }
+}
+
 /// A body CCD stopped short of where the solver left it, as the write-back applies it.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub(crate) struct CcdClamp {
@@ -182,10 +207,8 @@ pub(crate) struct CcdClamp {
     pub body: u32,
     /// Fraction of its motion it keeps.
     pub t: f32,
-    /// Displacement over the whole step of the body hit when that one goes on moving (a wall
-    /// moving into a bullet carries it along for the rest of the step); zero for a dynamic
-    /// body with CCD, which stops with this one instead.
-    pub hit_motion: Vec3,
+    /// How the body hit carries this one over the rest of the step.
+    pub carry: Carry,
     /// [`SweepHit::from_contact`].
     pub from_contact: bool,
     /// The body hit.
@@ -196,9 +219,6 @@ pub(crate) struct CcdClamp {
     pub restitution: f32,
     /// [`Sweep::first_unswept`], where that is not the hit.
     pub fallback: Option<SweepHit>,
-    /// The motion of a turning kinematic body hit, which carries this one by its rigid
-    /// motion over the rest of the step (instead of `hit_motion`).
-    pub carrier: Option<BodyMotion>,
 }
 
 /// One collider of the swept body, ready for the pair searches.
@@ -251,7 +271,7 @@ pub(crate) fn sweep_body(
         let local_box = c.shape.aabb(&Pose::IDENTITY);
         let min_half = local_box.half_extents().min_element();
         let centre_offset = c.local_pose.translation - motion.local_com;
-        let reach = centre_offset.length() + core_reach(&core);
+        let reach = centre_offset.length() + core.reach();
         let bound = centre_offset.length() + local_box.half_extents().length();
         if disp.length() + turn * reach + driven < CCD_MOTION_THRESHOLD * min_half {
             continue;
@@ -528,7 +548,7 @@ fn other_reach(c: &Collider, m: &BodyMotion) -> f32 {
     }
     let core_reach = c.shape.convex_core().map_or_else(
         || c.shape.aabb(&Pose::IDENTITY).half_extents().length(),
-        |(core, _)| core_reach(&core),
+        |(core, _)| core.reach(),
     );
     (c.local_pose.translation - m.local_com).length() + core_reach
 }

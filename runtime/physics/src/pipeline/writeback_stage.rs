@@ -12,7 +12,7 @@ use std::time::Instant;
 
 use glam::Vec3;
 
-use super::ccd::{sweep_body, BodyMotion, CcdClamp, SweepHit};
+use super::ccd::{sweep_body, BodyMotion, Carry, CcdClamp, SweepHit};
 use crate::aabb::Aabb;
 use crate::body_handle::BodyHandle;
 use crate::body_set::BodySet;
@@ -144,16 +144,14 @@ impl PhysicsWorld {
                 };
                 let motion = BodyMotion::between(&b.pose, &self.end_poses[k], b.mass.local_com);
                 let at_t = motion.pose_at(t, Vec3::ZERO);
-                let pose = match clamp.carrier {
-                    // Carried by a turning kinematic body: its motion from `t` to the end.
-                    Some(m) => m
+                let pose = match clamp.carry {
+                    Carry::Stopped => at_t,
+                    Carry::By(d) => Pose::new(at_t.translation + d * (1.0 - t), at_t.rotation),
+                    // The turning body's motion from `t` to the end.
+                    Carry::Rigid(m) => m
                         .pose_at(1.0, Vec3::ZERO)
                         .mul_pose(&m.pose_at(t, Vec3::ZERO).inverse())
                         .mul_pose(&at_t),
-                    None => Pose::new(
-                        at_t.translation + clamp.hit_motion * (1.0 - t),
-                        at_t.rotation,
-                    ),
                 };
                 let carry =
                     pose.transform_point(b.mass.local_com) - at_t.transform_point(b.mass.local_com);
@@ -297,7 +295,7 @@ impl PhysicsWorld {
                 if !(o.swept() && other != 0) {
                     continue;
                 }
-                if c.hit_motion != Vec3::ZERO {
+                if c.carry.moves() {
                     // Carried by the body it hit (see `carried_by_slow_bodies`).
                     continue;
                 }
@@ -307,13 +305,12 @@ impl PhysicsWorld {
                         self.ccd_clamps.push(CcdClamp {
                             body: other,
                             t: c.t,
-                            hit_motion: Vec3::ZERO,
+                            carry: Carry::Stopped,
                             from_contact: c.from_contact,
                             hit: self.bodies.handle_of(body),
                             normal: -c.normal,
                             restitution: c.restitution,
                             fallback: None,
-                            carrier: None,
                         });
                         clamp_of[other as usize] = self.ccd_clamps.len() as u32;
                         changed = true;
@@ -367,7 +364,7 @@ impl PhysicsWorld {
             };
             let (fast, slow_len) = (fast.length(), slow.length());
             if other != 0 && 4.0 * slow_len < fast && (1.0 - c.t) * slow_len <= c.t * fast {
-                c.hit_motion = slow;
+                c.carry = Carry::By(slow);
                 carriers.push((
                     other as u32,
                     self.bodies.handle_of(self.solver_handles[c.body as usize]),
@@ -459,28 +456,23 @@ fn clamp_of(
     bodies: &BodySet,
     motion_of: &dyn Fn(BodyHandle) -> Option<BodyMotion>,
 ) -> CcdClamp {
-    let hit_motion = match bodies.get(hit.body) {
-        Some(o) if o.swept() => Vec3::ZERO,
-        _ => motion_of(hit.body).map_or(Vec3::ZERO, |m| m.displacement()),
-    };
-    // A turning kinematic body carries what it hit by its whole rigid motion (a spinning
-    // paddle's point moves, its centre need not).
-    let carrier = match bodies.get(hit.body) {
-        Some(o) if o.body_type == BodyType::Kinematic => {
-            motion_of(hit.body).filter(|m| m.q0 != m.q1)
-        }
-        _ => None,
+    let carry = match bodies.get(hit.body) {
+        Some(o) if o.swept() => Carry::Stopped,
+        Some(o) if o.body_type == BodyType::Kinematic => match motion_of(hit.body) {
+            Some(m) if m.q0 != m.q1 => Carry::Rigid(m),
+            m => Carry::By(m.map_or(Vec3::ZERO, |m| m.displacement())),
+        },
+        _ => Carry::By(motion_of(hit.body).map_or(Vec3::ZERO, |m| m.displacement())),
     };
     CcdClamp {
         body,
         t: hit.t,
-        hit_motion,
+        carry,
         from_contact: hit.from_contact,
         hit: hit.body,
         normal: hit.normal,
         restitution: hit.restitution,
         fallback,
-        carrier,
     }
 }
 

@@ -30,6 +30,18 @@ pub enum ConvexCore<'a> {
 }
 
 impl ConvexCore<'_> {
+    /// Largest distance of the core's points from its frame origin, metres.
+    #[must_use]
+    pub fn reach(&self) -> f32 {
+        match self {
+            Self::Point => 0.0,
+            Self::Segment(a, b) => a.length().max(b.length()),
+            Self::Cuboid(h) => h.length(),
+            Self::Hull(h) => h.vertices().iter().map(|v| v.length()).fold(0.0, f32::max),
+            Self::Triangle(t) => t.iter().map(|v| v.length()).fold(0.0, f32::max),
+        }
+    }
+
     /// Point of the core farthest along `d` (local frame).
     #[inline]
     #[must_use]

@@ -121,15 +121,8 @@ impl Shape {
     /// for half spaces and triangle meshes.
     #[must_use]
     pub(crate) fn bounding_radius(&self) -> Option<f32> {
-        match self {
-            Self::Sphere(s) => Some(s.radius),
-            Self::Cuboid(c) => Some(c.half_extents.length()),
-            Self::Capsule(c) => Some(c.half_height + c.radius),
-            Self::ConvexHull(h) => {
-                Some(h.vertices().iter().map(|v| v.length()).fold(0.0, f32::max))
-            }
-            Self::HalfSpace(_) | Self::TriMesh(_) => None,
-        }
+        self.convex_core()
+            .map(|(core, radius)| core.reach() + radius)
     }
 
     /// Convex core and radius, for convex shapes.
