@@ -2,6 +2,7 @@
 
 pub mod box_box;
 pub mod capsule_contacts;
+pub(crate) mod closest_approach;
 pub(crate) mod collide;
 pub mod contact_manifold;
 pub mod contact_pair;

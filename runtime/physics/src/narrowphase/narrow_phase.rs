@@ -4,6 +4,7 @@ use std::collections::HashMap;
 
 use glam::{Mat3A, Vec3, Vec3A};
 
+use super::closest_approach::closest_miss;
 use super::collide::{collide, CollideScratch};
 use super::contact_manifold::ContactManifold;
 use super::contact_pair::{ContactPair, Generation};
@@ -325,7 +326,35 @@ impl NarrowPhase {
             let rot_b = bb.rotation;
             let d_ab = bb.translation - ba.translation;
             let inv_a = rot_a.inverse();
-            let margin = speculative_margin((ca, ba), (cb, bb), d_ab, settings);
+            let (margin, passing) = speculative_margin((ca, ba), (cb, bb), d_ab, settings);
+            // The pair is computed about the smaller collider's centre: f32 coordinates there
+            // are fine whatever the size of the other (a bullet 4 km from the centre of a
+            // 10 km wall got its separation to the millimetre only).
+            let centre_a = rot_a * ca.local_pose.translation;
+            let centre_b = d_ab + rot_b * cb.local_pose.translation;
+            // (Origin, A's pose, B's pose.)
+            let poses = || {
+                let smaller_b =
+                    cb.aabb.half_extents().max_element() < ca.aabb.half_extents().max_element();
+                let origin = if smaller_b { centre_b } else { centre_a };
+                (
+                    origin,
+                    Pose::new(centre_a - origin, rot_a * ca.local_pose.rotation),
+                    Pose::new(centre_b - origin, rot_b * cb.local_pose.rotation),
+                )
+            };
+            // A fast pair going by is met where it comes closest over the step (see
+            // `closest_approach`), B moved there by `shift`; its points keep the separation
+            // there, the least over the step.
+            let shift = if passing {
+                let closing = (bb.linvel - ba.linvel) * settings.dt;
+                let (_, pa, pb) = poses();
+                closest_miss(&ca.shape, &pa, &cb.shape, &pb, closing)
+                    .map_or(Vec3::ZERO, |t| closing * t)
+            } else {
+                Vec3::ZERO
+            };
+            let frame = PointFrame::new(ba, bb, inv_a, d_ab + shift);
             let pair = &mut self.pairs[i];
             pair.reach = ba
                 .translation
@@ -336,13 +365,10 @@ impl NarrowPhase {
             // centres, which a kept normal would not follow (a pile of spheres sank 3.3 cm
             // instead of 2.4), and their one point costs less than the reuse bookkeeping.
             if let (Shape::Sphere(sa), Shape::Sphere(sb)) = (&ca.shape, &cb.shape) {
-                let centre_a = rot_a * ca.local_pose.translation;
-                let centre_b = d_ab + rot_b * cb.local_pose.translation;
-                let frame = PointFrame::new(ba, bb, inv_a, d_ab);
                 ball_ball(
                     pair,
                     (centre_a, sa.radius),
-                    (centre_b, sb.radius),
+                    (centre_b + shift, sb.radius),
                     margin,
                     &frame,
                 );
@@ -356,7 +382,7 @@ impl NarrowPhase {
             // would turn with the rolling body, off the line through the centre, and the normal
             // force on it would turn the body further (a 1 mm ball on a box rolled off it).
             let curved = |s: &Shape| matches!(s, Shape::Sphere(_) | Shape::Capsule(_));
-            let reusable = !curved(&ca.shape) && !curved(&cb.shape);
+            let reusable = !curved(&ca.shape) && !curved(&cb.shape) && shift == Vec3::ZERO;
             if let Some(g) = pair.generated_at.filter(|_| reusable) {
                 let size = ca
                     .aabb
@@ -387,21 +413,13 @@ impl NarrowPhase {
                     continue;
                 }
             }
-            pair.generated_at = Some(Generation {
+            // Points made where a passing pair comes closest are stored against B there, which
+            // a refresh from the step's start would misread.
+            pair.generated_at = (shift == Vec3::ZERO).then_some(Generation {
                 translation: rel.0,
                 rotation: rel.1,
                 rotation_a: rot_a,
             });
-            // The pair is computed about the smaller collider's centre: f32 coordinates there
-            // are fine whatever the size of the other (a bullet 4 km from the centre of a
-            // 10 km wall got its separation to the millimetre only).
-            let centre_a = rot_a * ca.local_pose.translation;
-            let centre_b = d_ab + rot_b * cb.local_pose.translation;
-            let smaller_b =
-                cb.aabb.half_extents().max_element() < ca.aabb.half_extents().max_element();
-            let shift = if smaller_b { centre_b } else { centre_a };
-            let pa = Pose::new(centre_a - shift, rot_a * ca.local_pose.rotation);
-            let pb = Pose::new(centre_b - shift, rot_b * cb.local_pose.rotation);
             // A frictionless face keeps its normal through a small turn (see
             // `FRICTIONLESS_NORMAL_HOLD_ANGLE`) and its points where they are (see
             // `RawManifold::reduce`).
@@ -412,6 +430,8 @@ impl NarrowPhase {
             } else {
                 ReduceFrom::Deepest
             };
+            let (origin, pa, mut pb) = poses();
+            pb.translation += shift;
             self.raw.clear();
             collide(
                 &ca.shape,
@@ -424,14 +444,13 @@ impl NarrowPhase {
                 stats,
                 &mut self.scratch,
             );
-            if shift != Vec3::ZERO {
+            if origin != Vec3::ZERO {
                 for rm in &mut self.raw {
                     for rp in &mut rm.points {
-                        rp.point += shift;
+                        rp.point += origin;
                     }
                 }
             }
-            let frame = PointFrame::new(ba, bb, inv_a, d_ab);
             let pair = &mut self.pairs[i];
             self.old.clear();
             for m in &pair.manifolds {
@@ -694,7 +713,9 @@ pub(crate) fn make_event(
 /// as far again as the two close over the step (up to `max_speculative_distance`; CCD's time
 /// of impact stops what moves farther), unless they close by more than twice the radii of
 /// balls about the two shapes, and those balls, moving with their bodies over the step, never
-/// come within `speculative_distance` of each other.
+/// come within `speculative_distance` of each other; and whether the pair closes by more than
+/// twice those radii and comes near, to be met where it comes closest over the step should
+/// it go by (see [`closest_miss`]).
 ///
 /// A speculative contact holds its two bodies apart along the normal it was made with, from
 /// the closest points at the step's start: for a body that will go by the other, a ghost.
@@ -707,13 +728,13 @@ fn speculative_margin(
     (cb, bb): (&Collider, &NarrowBody),
     d_ab: Vec3,
     settings: &PhysicsSettings,
-) -> f32 {
+) -> (f32, bool) {
     let base = settings.speculative_distance;
     let closing = (bb.linvel - ba.linvel) * settings.dt;
     let sweep = closing.length();
     if sweep <= base && !ba.kinematic && !bb.kinematic {
         // Nearly every pair of a pile.
-        return base + sweep;
+        return (base + sweep, false);
     }
     far_speculative_margin((ca, ba), (cb, bb), d_ab, closing, settings)
 }
@@ -727,7 +748,7 @@ fn far_speculative_margin(
     d_ab: Vec3,
     closing: Vec3,
     settings: &PhysicsSettings,
-) -> f32 {
+) -> (f32, bool) {
     let base = settings.speculative_distance;
     // A kinematic body's turn moves its points too: a paddle spinning at 10 rad/s swept
     // 33 cm a step at 1 m from its axis at fast, through a 2 cm ball it had no contact
@@ -749,11 +770,11 @@ fn far_speculative_margin(
     };
     let sweep = closing.length() + turning(ba, ca) + turning(bb, cb);
     if sweep <= base {
-        return base + sweep;
+        return (base + sweep, false);
     }
     let margin = base + sweep.min(settings.max_speculative_distance);
     let (Some(ra), Some(rb)) = (ca.shape.bounding_radius(), cb.shape.bounding_radius()) else {
-        return margin;
+        return (margin, false);
     };
     if sweep <= 2.0 * (ra + rb) {
         // Closing by less than twice the sum of the balls' radii in a step: a crowd, where a
@@ -761,7 +782,7 @@ fn far_speculative_margin(
         // margins 8,000 spheres poured into a box cost 15–20 % more at balanced (12 % when
         // the bound was the smaller radius), and at fast 300 of them, the bound once the sum,
         // ended 4.9 cm into each other instead of 4.3.
-        return margin;
+        return (margin, false);
     }
     // Ball centres relative to A's body origin, and how far a turn moves any point of a ball
     // over the step (its distance from the centre of mass, plus the radius, times the angle).
@@ -783,8 +804,8 @@ fn far_speculative_margin(
     };
     let nearest = (c + closing * s).length();
     if nearest > ra + rb + base + slack {
-        base
+        (base, false)
     } else {
-        margin
+        (margin, true)
     }
 }

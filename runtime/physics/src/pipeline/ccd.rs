@@ -181,9 +181,12 @@ pub(crate) enum Carry {
     /// Not at all: the body hit stops too (dynamic, with CCD).
     Stopped,
     /// By this displacement over the whole step, of the body hit as it goes on moving (a
-    /// wall moving into a bullet carries it along), or of a much slower body with CCD
-    /// (`PhysicsWorld::carried_by_slow_bodies`).
+    /// wall moving into a bullet carries it along).
     By(Vec3),
+    /// By the displacement over the whole step of a much slower body with CCD, of this solver
+    /// index, where it ends (`PhysicsWorld::carried_by_slow_bodies`): its own stop, and what
+    /// carries it, included.
+    With(u32),
     /// By the whole rigid motion of a turning kinematic body (a spinning paddle's point
     /// moves, its centre need not).
     Rigid(BodyMotion),
@@ -195,7 +198,7 @@ impl Carry {
         match self {
             Self::Stopped => false,
             Self::By(d) => *d != Vec3::ZERO,
-            Self::Rigid(_) => true,
+            Self::With(_) | Self::Rigid(_) => true,
         }
     }
 }
@@ -296,6 +299,21 @@ pub(crate) fn sweep_body(
             let Some(other_motion) = motion_of(other.parent) else {
                 return true;
             };
+            // A pair moving together (bodies a kinematic wall carries, side by side) closes
+            // less than the threshold of the smaller of the two: its contacts hold it. Its
+            // time of impact stopped both part way through the step, and the wall that
+            // carried them went on through them.
+            let relative = (disp - other_motion.displacement()).length()
+                + turn * reach
+                + other_motion.turn() * other_reach(other, &other_motion);
+            let other_half = other
+                .shape
+                .aabb(&Pose::IDENTITY)
+                .half_extents()
+                .min_element();
+            if relative < CCD_MOTION_THRESHOLD * min_half.min(other_half) {
+                return true;
+            }
             if other_motion.com0 != other_motion.com1 {
                 // A moving body: its own swept bounds must meet ours.
                 let start = other_motion

@@ -12,7 +12,7 @@ use std::time::Instant;
 
 use glam::Vec3;
 
-use super::ccd::{sweep_body, BodyMotion, Carry, CcdClamp, SweepHit};
+use super::ccd::{sweep_body, BodyMotion, Carry, CcdClamp, SweepHit, CCD_MOTION_THRESHOLD};
 use crate::aabb::Aabb;
 use crate::body_handle::BodyHandle;
 use crate::body_set::BodySet;
@@ -59,15 +59,7 @@ impl PhysicsWorld {
         self.ccd_clamps.clear();
         if s.ccd_enabled {
             let (bodies, end_poses) = (&self.bodies, &self.end_poses);
-            let motion_of = |h: BodyHandle| -> Option<BodyMotion> {
-                let b = bodies.get(h)?;
-                let k = b.solver_index as usize;
-                Some(if k != 0 && k < end_poses.len() {
-                    BodyMotion::between(&b.pose, &end_poses[k], b.mass.local_com)
-                } else {
-                    BodyMotion::fixed(&b.pose, b.mass.local_com)
-                })
-            };
+            let motion_of = |h: BodyHandle| motion_over_step(bodies, end_poses, h);
             for k in 1..n {
                 let idx = self.solver_handles[k];
                 let Some(b) = self.bodies.arena.get_by_index(idx) else {
@@ -133,7 +125,22 @@ impl PhysicsWorld {
             }
             self.ccd_clamps = self.carried_by_slow_bodies(&motion_of);
             self.stop_together();
-            for i in 0..self.ccd_clamps.len() {
+            if let Some((others_move, driven)) = max_move.filter(|m| m.1 > 0.0) {
+                let (bodies, end_poses) = (&self.bodies, &self.end_poses);
+                let motion_of = |h: BodyHandle| motion_over_step(bodies, end_poses, h);
+                for (i, carry) in
+                    self.carried_by_kinematic_bodies(s.linear_slop, others_move, driven, &motion_of)
+                {
+                    self.ccd_clamps[i].carry = carry;
+                }
+            }
+            // Bodies carried with a slower one after that one's own stop and carry.
+            let with = |c: &CcdClamp| matches!(c.carry, Carry::With(_));
+            let order: Vec<usize> = (0..self.ccd_clamps.len())
+                .filter(|&i| !with(&self.ccd_clamps[i]))
+                .chain((0..self.ccd_clamps.len()).filter(|&i| with(&self.ccd_clamps[i])))
+                .collect();
+            for i in order {
                 let clamp = self.ccd_clamps[i];
                 let CcdClamp {
                     t, from_contact, ..
@@ -147,6 +154,17 @@ impl PhysicsWorld {
                 let pose = match clamp.carry {
                     Carry::Stopped => at_t,
                     Carry::By(d) => Pose::new(at_t.translation + d * (1.0 - t), at_t.rotation),
+                    Carry::With(o) => {
+                        let o = o as usize;
+                        let d = self
+                            .bodies
+                            .arena
+                            .get_by_index(self.solver_handles[o])
+                            .map_or(Vec3::ZERO, |ob| {
+                                self.end_poses[o].translation - ob.pose.translation
+                            });
+                        Pose::new(at_t.translation + d * (1.0 - t), at_t.rotation)
+                    }
                     // The turning body's motion from `t` to the end.
                     Carry::Rigid(m) => m
                         .pose_at(1.0, Vec3::ZERO)
@@ -271,7 +289,10 @@ impl PhysicsWorld {
     /// poses at one time are known to be apart. Stopped at their own fractions, two plates the
     /// contact had set moving together (one stopped at 0.6 % of the step, the other at 1.5 %)
     /// ended on each other's far side; stopped by one's sweep alone (the other's, by rounding,
-    /// found nothing), the one left behind was passed through.
+    /// found nothing), the one left behind was passed through. A body stopped by one that is
+    /// carried on (by a kinematic body it met) is carried with it: a bullet of a volley that a
+    /// wall moving at 20 m/s was pushing, stopped by its neighbour at an eighth of the step,
+    /// was left there while the wall took the neighbour on, and the wall went through it.
     fn stop_together(&mut self) {
         if self.ccd_clamps.is_empty() {
             return;
@@ -317,7 +338,12 @@ impl PhysicsWorld {
                     }
                     j => {
                         let theirs = &mut self.ccd_clamps[j as usize - 1];
-                        if theirs.t > c.t {
+                        if theirs.carry.moves() {
+                            // Carried on (by a kinematic wall it met), it takes this one
+                            // along from its own stop.
+                            self.ccd_clamps[i].carry = theirs.carry;
+                            changed = true;
+                        } else if theirs.t > c.t {
                             theirs.t = c.t;
                             changed = true;
                         }
@@ -362,9 +388,21 @@ impl PhysicsWorld {
             let (Some(fast), Some(slow)) = (disp(c.body as usize), disp(other)) else {
                 continue;
             };
+            // What is left of the slow body's motion after the stop, against the part of
+            // its own path the fast body has swept: no longer, and no farther from that line
+            // than half the fast body's thinnest half extent (a bullet carried by a body going
+            // by a wall's edge was taken through the wall).
+            let left = slow * (1.0 - c.t);
+            let back = -left.dot(fast.normalize_or_zero());
+            let across = (left + fast.normalize_or_zero() * back).length();
+            let thinnest = self.thinnest_half_extent(c.body as usize);
             let (fast, slow_len) = (fast.length(), slow.length());
-            if other != 0 && 4.0 * slow_len < fast && (1.0 - c.t) * slow_len <= c.t * fast {
-                c.carry = Carry::By(slow);
+            if other != 0
+                && 4.0 * slow_len < fast
+                && (0.0..=c.t * fast).contains(&back)
+                && across <= CCD_MOTION_THRESHOLD * thinnest
+            {
+                c.carry = Carry::With(other as u32);
                 carriers.push((
                     other as u32,
                     self.bodies.handle_of(self.solver_handles[c.body as usize]),
@@ -384,6 +422,71 @@ impl PhysicsWorld {
             }
         }
         out
+    }
+
+    /// The stopped bodies that a kinematic body moving on would reach where they stopped are
+    /// carried by it from their stop on (as [`clamp_of`] carries a body that hit one): two
+    /// bullets of a volley a wall moving at 20 m/s was pushing stopped each other an eighth of
+    /// the way through the step, and the wall, which neither had met on its whole path, went
+    /// through both where they stopped. From the stop on, so they stay ahead of the wall.
+    fn carried_by_kinematic_bodies(
+        &self,
+        linear_slop: f32,
+        others_move: f32,
+        driven: f32,
+        motion_of: &dyn Fn(BodyHandle) -> Option<BodyMotion>,
+    ) -> Vec<(usize, Carry)> {
+        let mut out = Vec::new();
+        let kinematic_motion = |h: BodyHandle| {
+            self.bodies
+                .get(h)
+                .filter(|b| b.body_type == BodyType::Kinematic)
+                .and_then(|_| motion_of(h))
+        };
+        for i in 0..self.ccd_clamps.len() {
+            let c = self.ccd_clamps[i];
+            if c.carry.moves() {
+                continue;
+            }
+            let k = c.body as usize;
+            let Some(b) = self.bodies.arena.get_by_index(self.solver_handles[k]) else {
+                continue;
+            };
+            let at_t = BodyMotion::between(&b.pose, &self.end_poses[k], b.mass.local_com)
+                .pose_at(c.t, Vec3::ZERO);
+            let sweep = sweep_body(
+                &self.colliders,
+                &self.bodies,
+                &self.broadphase,
+                self.bodies.handle_of(self.solver_handles[k]),
+                &BodyMotion::fixed(&at_t, b.mass.local_com),
+                linear_slop,
+                others_move,
+                driven,
+                &|h| kinematic_motion(h),
+            );
+            if let Some(hit) = sweep.first {
+                out.push((
+                    i,
+                    clamp_of(c.body, hit, None, &self.bodies, motion_of).carry,
+                ));
+            }
+        }
+        out
+    }
+
+    /// The smallest half extent of the colliders of the body of solver index `k`, metres.
+    fn thinnest_half_extent(&self, k: usize) -> f32 {
+        self.bodies
+            .arena
+            .get_by_index(self.solver_handles[k])
+            .map_or(0.0, |b| {
+                b.colliders
+                    .iter()
+                    .filter_map(|&ch| self.colliders.get(ch))
+                    .map(|c| c.shape.aabb(&Pose::IDENTITY).half_extents().min_element())
+                    .fold(f32::INFINITY, f32::min)
+            })
     }
 
     /// After a CCD stop from a start in contact, the centres of the two bodies that still close
@@ -443,6 +546,18 @@ impl PhysicsWorld {
             self.solver_states[b].v += inv_b * n * j;
         }
     }
+}
+
+/// How body `h` moves over the step: from its pose to its end pose where it is in the solver,
+/// else not at all.
+fn motion_over_step(bodies: &BodySet, end_poses: &[Pose], h: BodyHandle) -> Option<BodyMotion> {
+    let b = bodies.get(h)?;
+    let k = b.solver_index as usize;
+    Some(if k != 0 && k < end_poses.len() {
+        BodyMotion::between(&b.pose, &end_poses[k], b.mass.local_com)
+    } else {
+        BodyMotion::fixed(&b.pose, b.mass.local_com)
+    })
 }
 
 /// The stop of the body of solver index `body` at `hit`: a body hit that does not stop
