@@ -4,6 +4,7 @@ use glam::Vec3;
 
 use super::box_box::box_box;
 use super::capsule_contacts::{capsule_capsule, capsule_sphere};
+use super::closest_approach::Passing;
 use super::convex_convex::{convex_convex, ClipScratch};
 use super::half_space_contacts::half_space_convex;
 use super::narrow_stats::NarrowStats;
@@ -24,7 +25,9 @@ pub(crate) struct CollideScratch {
 /// Contact manifolds between shape A at `pa` and shape B at `pb` (poses in any common frame;
 /// the caller passes a frame centred near A for precision). Normals point from A to B.
 /// Only contacts with separation at most `margin` are produced, each manifold reduced to
-/// four points starting `from` (see [`RawManifold::reduce`]).
+/// four points starting `from` (see [`RawManifold::reduce`]). With `passing` (B's motion
+/// relative to A over the step), a mesh's triangles that B only goes by are left out (see
+/// [`trimesh_convex`]).
 #[allow(clippy::too_many_arguments)]
 pub(crate) fn collide(
     a: &Shape,
@@ -33,6 +36,7 @@ pub(crate) fn collide(
     pb: &Pose,
     margin: f32,
     from: ReduceFrom,
+    passing: Option<Passing>,
     out: &mut Vec<RawManifold>,
     stats: &mut NarrowStats,
     scratch: &mut CollideScratch,
@@ -66,7 +70,8 @@ pub(crate) fn collide(
         | (S::Sphere(_) | S::Cuboid(_) | S::Capsule(_) | S::ConvexHull(_), S::HalfSpace(_))
         | (S::Sphere(_), S::Capsule(_))
         | (S::Sphere(_) | S::Cuboid(_) | S::Capsule(_) | S::ConvexHull(_), S::TriMesh(_)) => {
-            collide(b, pb, a, pa, margin, from, out, stats, scratch);
+            let passing = passing.map(Passing::flipped);
+            collide(b, pb, a, pa, margin, from, passing, out, stats, scratch);
             true
         }
         (S::Cuboid(x), S::Cuboid(y)) => {
@@ -127,7 +132,7 @@ pub(crate) fn collide(
             false
         }
         (S::TriMesh(m), _) => {
-            trimesh_convex(m, pa, b, pb, margin, out, stats, &mut scratch.clip);
+            trimesh_convex(m, pa, b, pb, margin, passing, out, stats, &mut scratch.clip);
             false
         }
         _ => {

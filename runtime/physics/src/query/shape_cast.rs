@@ -160,6 +160,7 @@ impl Cast<'_> {
                 &other,
                 margin,
                 ReduceFrom::Deepest,
+                None,
                 &mut scratch.manifolds,
                 &mut scratch.stats,
                 &mut scratch.collide,

@@ -122,6 +122,7 @@ impl PhysicsWorld {
                 &qb,
                 0.0,
                 ReduceFrom::Deepest,
+                None,
                 &mut manifolds,
                 &mut stats,
                 &mut scratch,
