@@ -345,10 +345,6 @@ impl NarrowPhase {
             };
             // A fast pair going by is met where it comes closest over the step (see
             // `closest_approach`), B moved there by `shift` (see `back_to_start`).
-            let passing = passing.then(|| Passing {
-                closing: (bb.linvel - ba.linvel) * settings.dt,
-                ahead: 1.0 + 1.0 / settings.substeps.max(1) as f32,
-            });
             let shift = passing.map_or(Vec3::ZERO, |passing| {
                 let (_, pa, pb) = poses();
                 closest_miss(&ca.shape, &pa, &cb.shape, &pb, passing)
@@ -740,10 +736,10 @@ pub(crate) fn make_event(
 /// as far again as the two close over the step (up to `max_speculative_distance`; CCD's time
 /// of impact stops what moves farther), unless they close by more than twice the radii of
 /// balls about the two shapes, and those balls, moving with their bodies over the step, never
-/// come within `speculative_distance` of each other; and whether a pair closing by more than
-/// `speculative_distance` is to be met where it comes closest over the step should it go by
-/// (see [`closest_miss`]): every such pair, but two dynamic bodies of a crowd (closing by
-/// less than twice their radii).
+/// come within `speculative_distance` of each other; and, for a pair closing by more than
+/// `speculative_distance` that is to be met where it comes closest over the step should it
+/// go by (see [`closest_miss`]), how it moves: every such pair, but two dynamic bodies of a
+/// crowd (closing by less than twice their radii).
 ///
 /// A speculative contact holds its two bodies apart along the normal it was made with, from
 /// the closest points at the step's start: for a body that will go by the other, a ghost.
@@ -756,19 +752,24 @@ fn speculative_margin(
     (cb, bb): (&Collider, &NarrowBody),
     d_ab: Vec3,
     settings: &PhysicsSettings,
-) -> (f32, bool) {
+) -> (f32, Option<Passing>) {
     let base = settings.speculative_distance;
     let closing = (bb.linvel - ba.linvel) * settings.dt;
     let sweep = closing.length();
     if sweep <= base && !ba.kinematic && !bb.kinematic {
         // Nearly every pair of a pile.
-        return (base + sweep, false);
+        return (base + sweep, None);
     }
-    far_speculative_margin((ca, ba), (cb, bb), d_ab, closing, settings)
+    let (margin, passing) = far_speculative_margin((ca, ba), (cb, bb), d_ab, closing, settings);
+    let passing = passing.then(|| Passing {
+        closing,
+        ahead: 1.0 + 1.0 / settings.substeps.max(1) as f32,
+    });
+    (margin, passing)
 }
 
 /// [`speculative_margin`] of a pair closing faster than the base distance a step, or with a
-/// kinematic body.
+/// kinematic body, with whether it is to be met where it comes closest.
 #[inline(never)]
 fn far_speculative_margin(
     (ca, ba): (&Collider, &NarrowBody),

@@ -147,7 +147,7 @@ pub(crate) struct Sweep {
     pub first: Option<SweepHit>,
     /// The first hit of a body that does not stop itself (static, kinematic, or dynamic
     /// without CCD): where the body stops when it need not stop for a dynamic body with CCD
-    /// met earlier (see `PhysicsWorld::release_slow_stops`).
+    /// met earlier (see `PhysicsWorld::carried_by_slow_bodies`).
     pub first_unswept: Option<SweepHit>,
     /// Some search hit [`CCD_MAX_ITERATIONS`].
     pub not_converged: bool,
@@ -303,9 +303,10 @@ pub(crate) fn sweep_body(
             // less than the threshold of the smaller of the two: its contacts hold it. Its
             // time of impact stopped both part way through the step, and the wall that
             // carried them went on through them.
+            let other_turn_reach = other_reach(other, &other_motion);
             let relative = (disp - other_motion.displacement()).length()
                 + turn * reach
-                + other_motion.turn() * other_reach(other, &other_motion);
+                + other_motion.turn() * other_turn_reach;
             let other_half = other
                 .shape
                 .aabb(&Pose::IDENTITY)
@@ -323,7 +324,7 @@ pub(crate) fn sweep_body(
                     .pose_at(1.0, Vec3::ZERO)
                     .mul_pose(&other.local_pose);
                 let theirs = other.shape.aabb(&start).union(&other.shape.aabb(&end));
-                let reach = other_reach(other, &other_motion) * other_motion.turn().min(2.0);
+                let reach = other_turn_reach * other_motion.turn().min(2.0);
                 if !theirs.expanded(reach).intersects(&swept) {
                     return true;
                 }
